@@ -1,0 +1,40 @@
+# The pinned upstream Bullet this patch series is made against.
+# Read by the top-level CMakeLists.txt (cmake/BulletUpstream.cmake); edit only here.
+#
+# pybullet 3.2.7 is Bullet master just after the 3.25 tag (BT_BULLET_VERSION 326).
+# Its src/ is byte-identical to bulletphysics/bullet3 master 6c888f4 apart from the
+# build files (src/*/CMakeLists.txt, premake4.lua) that the sdist leaves out.
+
+set(BULLET_UPSTREAM_PACKAGE "pybullet")
+set(BULLET_UPSTREAM_VERSION "3.2.7")
+set(BULLET_UPSTREAM_BT_VERSION "326")
+# The version string installed in BulletConfig.cmake and bullet.pc (BT_BULLET_VERSION 326).
+set(BULLET_UPSTREAM_VERSION_STRING "3.26")
+set(BULLET_UPSTREAM_ARCHIVE "pybullet-3.2.7.tar.gz")
+set(BULLET_UPSTREAM_ARCHIVE_BYTES 80508379)
+set(BULLET_UPSTREAM_SHA256 "042879db8d101ac7590dee475fc6aded508b85fe1273fdbbfde1d88bd200e14f")
+# Top folder inside the archive.
+set(BULLET_UPSTREAM_TOPDIR "pybullet-3.2.7")
+
+# What is unpacked (paths relative to the top folder). The libraries need the
+# first group; the demo app (OpenGL / OSMesa) needs the second.
+set(BULLET_UPSTREAM_LIBRARY_PATHS
+	LICENSE.txt
+	src/LinearMath
+	src/BulletCollision
+	src/BulletDynamics
+	src/btBulletCollisionCommon.h
+	src/btBulletDynamicsCommon.h
+	src/btBulletCollisionAll.cpp
+	src/btBulletDynamicsAll.cpp
+	src/btLinearMathAll.cpp)
+set(BULLET_UPSTREAM_DEMO_PATHS
+	src/Bullet3Common
+	examples/OpenGLWindow
+	examples/CommonInterfaces
+	examples/ExampleBrowser
+	examples/Utils
+	examples/ThirdPartyLibs/glad
+	examples/ThirdPartyLibs/stb_image
+	examples/ThirdPartyLibs/Gwen
+	examples/ThirdPartyLibs/optionalX11)

@@ -1,0 +1,155 @@
+#include "CharpyCommandLine.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <functional>
+#include <map>
+
+namespace
+{
+bool parseNumber(const std::string& text, double& value)
+{
+	if (text.empty())
+	{
+		return false;
+	}
+	char* end = nullptr;
+	errno = 0;
+	value = std::strtod(text.c_str(), &end);
+	return end == text.c_str() + text.size() && errno == 0;
+}
+
+bool parseInteger(const std::string& text, int& value)
+{
+	double d;
+	if (!parseNumber(text, d) || d != static_cast<double>(static_cast<long long>(d)) || d < -1e9 || d > 1e9)
+	{
+		return false;
+	}
+	value = static_cast<int>(d);
+	return true;
+}
+
+using Setter = std::function<bool(CharpyParameters&, const std::string&)>;
+
+Setter number(double CharpyParameters::*field)
+{
+	return [field](CharpyParameters& p, const std::string& text) { return parseNumber(text, p.*field); };
+}
+
+const std::map<std::string, std::pair<Setter, const char*>>& valueFlags()
+{
+	static const std::map<std::string, std::pair<Setter, const char*>> flags = {
+		{"method", {[](CharpyParameters& p, const std::string& text) {
+						auto m = parseCharpyMethod(text);
+						if (m) p.method = *m;
+						return m.has_value();
+					},
+					"NAME  joining method (see --list-methods), default plastic-hinge"}},
+		{"dt", {number(&CharpyParameters::dt_s), "SECONDS  frame step, default 1e-4"}},
+		{"auto-dt-coarse", {number(&CharpyParameters::auto_dt_coarse_s), "SECONDS  step far from contact with --auto-dt, default 5e-3"}},
+		{"contact-substep", {number(&CharpyParameters::contact_substep_s), "SECONDS  internal step in/near contact, 0 = off, default 2e-5"}},
+		{"iterations", {[](CharpyParameters& p, const std::string& t) { return parseInteger(t, p.solver_iterations); }, "N  solver iterations, default 10"}},
+		{"duration", {number(&CharpyParameters::duration_s), "SECONDS  simulated time, default 0.06"}},
+		{"fy", {number(&CharpyParameters::yield_stress_pa), "PA  yield stress, default 400e6"}},
+		{"youngs-modulus", {number(&CharpyParameters::youngs_modulus_pa), "PA  default 200e9"}},
+		{"density", {number(&CharpyParameters::density_kg_m3), "KG_M3  default 7800"}},
+		{"friction", {number(&CharpyParameters::friction), "MU  combined friction of specimen contacts, default 0"}},
+		{"max-plastic-rotation", {number(&CharpyParameters::max_plastic_rotation_rad), "RAD  breaks plastic joints, default 3"}},
+		{"parts", {[](CharpyParameters& p, const std::string& t) { return parseInteger(t, p.parts); }, "N  even number of specimen parts, default 2"}},
+		{"specimen-width", {number(&CharpyParameters::specimen_width_m), "M  default 0.01"}},
+		{"specimen-length", {number(&CharpyParameters::specimen_length_m), "M  default 0.055"}},
+		{"notch-depth", {number(&CharpyParameters::notch_depth_m), "M  default 0.002"}},
+		{"anvil-gap", {number(&CharpyParameters::anvil_gap_m), "M  default 0.04"}},
+		{"anvil-width", {number(&CharpyParameters::anvil_width_m), "M  default 0.04"}},
+		{"hammer-mass", {number(&CharpyParameters::hammer_mass_kg), "KG  default 19.5"}},
+		{"hammer-thickness", {number(&CharpyParameters::hammer_thickness_m), "M  0 = no hammer, default 0.02"}},
+		{"draft", {number(&CharpyParameters::hammer_draft_m), "M  striker nose, default 0.04"}},
+		{"release-angle", {number(&CharpyParameters::release_angle_rad), "RAD  from hanging, default 2.8"}},
+		{"initial-energy", {number(&CharpyParameters::initial_energy_j), "J  hammer energy, overrides --release-angle"}},
+		{"brittle-force", {number(&CharpyParameters::brittle_breaking_force_n), "N  breaking force of method brittle, default 2e4"}},
+		{"frequency-ratio", {number(&CharpyParameters::frequency_ratio), "STEPS  per period for elastic DOFs, default 25"}},
+	};
+	return flags;
+}
+}  // namespace
+
+CharpyCommandLine parseCharpyCommandLine(const std::vector<std::string>& arguments)
+{
+	CharpyCommandLine cl;
+	for (const std::string& argument : arguments)
+	{
+		if (argument.rfind("--", 0) != 0)
+		{
+			cl.errors.push_back("unexpected argument '" + argument + "' (flags look like --name=value)");
+			continue;
+		}
+		std::string name = argument.substr(2);
+		std::string value;
+		bool hasValue = false;
+		size_t eq = name.find('=');
+		if (eq != std::string::npos)
+		{
+			value = name.substr(eq + 1);
+			name = name.substr(0, eq);
+			hasValue = true;
+		}
+		auto flagWithoutValue = [&](bool& target) {
+			if (hasValue)
+				cl.errors.push_back("--" + name + " takes no value");
+			else
+				target = true;
+		};
+		if (name == "help")
+			flagWithoutValue(cl.help);
+		else if (name == "list-methods")
+			flagWithoutValue(cl.listMethods);
+		else if (name == "json")
+			flagWithoutValue(cl.json);
+		else if (name == "auto-dt")
+			flagWithoutValue(cl.parameters.auto_dt);
+		else if (name == "history")
+		{
+			if (!hasValue || value.empty())
+				cl.errors.push_back("--history needs a file name: --history=FILE.csv");
+			else
+				cl.historyPath = value;
+		}
+		else
+		{
+			auto it = valueFlags().find(name);
+			if (it == valueFlags().end())
+			{
+				cl.errors.push_back("unknown flag --" + name + " (see --help)");
+			}
+			else if (!hasValue)
+			{
+				cl.errors.push_back("--" + name + " needs a value: --" + name + "=" + it->second.second);
+			}
+			else if (!it->second.first(cl.parameters, value))
+			{
+				cl.errors.push_back("--" + name + ": '" + value + "' is not valid; expected " + it->second.second);
+			}
+		}
+	}
+	if (cl.errors.empty() && !cl.help && !cl.listMethods)
+	{
+		for (const std::string& e : validateCharpyParameters(cl.parameters))
+		{
+			cl.errors.push_back(e);
+		}
+	}
+	return cl;
+}
+
+std::string charpyUsage()
+{
+	std::string text =
+		"usage: charpy [--method=NAME] [--json] [--history=FILE.csv] [--auto-dt] [--list-methods] [flags]\n"
+		"Runs the Charpy impact test scene headless and prints the energy balance.\n";
+	for (const auto& [name, flag] : valueFlags())
+	{
+		text += "  --" + name + "=" + flag.second + "\n";
+	}
+	return text;
+}

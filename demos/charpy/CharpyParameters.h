@@ -1,0 +1,57 @@
+// Every parameter of the Charpy impact test scene (thesis section 2.2), with its unit.
+// Axes: X horizontal (the hammer comes from +X), Y up, Z = 0 symmetry plane.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "CharpyMethod.h"
+
+struct CharpyParameters
+{
+	CharpyMethod method = CharpyMethod::PlasticHinge;
+
+	// material (steel)
+	double density_kg_m3 = 7800.0;
+	double youngs_modulus_pa = 200e9;
+	double yield_stress_pa = 400e6;
+	double friction = 0.0;  // combined Coulomb coefficient of every specimen contact
+	double max_plastic_rotation_rad = 3.0;  // accumulated plastic rotation that breaks a plastic joint
+
+	// specimen: 10 x 10 x 55 mm, notch at mid-span on the anvil side, bottom at y = 0.2 m, back at x = 0
+	double specimen_width_m = 0.010;   // b: in X (the impact direction) and in Y
+	double specimen_length_m = 0.055;  // along Z
+	double notch_depth_m = 0.002;
+	double specimen_bottom_y_m = 0.2;
+	int parts = 2;  // even: a joint sits at the notch (method rigid uses one body)
+
+	// anvils
+	double anvil_gap_m = 0.040;    // open space between the anvils along Z
+	double anvil_width_m = 0.040;  // each anvil along Z
+
+	// hammer: a steel blade swinging in the X-Y plane through the gap
+	double hammer_mass_kg = 19.5;
+	double hammer_length_m = 0.5;       // head along X
+	double hammer_height_m = 0.25;      // head along Y
+	double hammer_thickness_m = 0.02;   // head along Z; 0 = no hammer in the scene
+	double hammer_draft_m = 0.04;       // striker nose in front of the head (collision only, like the arm)
+	double hammer_arm_length_m = 0.5;   // 40 x 40 mm arm from the head to the pivot (collision only)
+	double release_angle_rad = 2.8;     // pendulum angle from hanging at which the hammer is released at rest
+	double initial_energy_j = 0.0;      // if > 0: hammer energy above the hanging position, overrides release_angle_rad
+
+	// stepping
+	double dt_s = 1e-4;                  // frame step
+	bool auto_dt = false;                // coarse steps (auto_dt_coarse_s) away from contact, dt_s near it
+	double auto_dt_coarse_s = 5e-3;
+	double contact_substep_s = 2e-5;     // internal step while the specimen is in or near contact; 0 = off
+	int solver_iterations = 10;
+	double duration_s = 0.06;            // simulated time after the hammer is placed just before impact
+
+	// brittle method: breaking force of the zero-limit joint, N (impulse threshold = force * internal dt)
+	double brittle_breaking_force_n = 20e3;
+	// elastic-plastic methods: spring steps per natural period below which a DOF is rigid-plastic
+	double frequency_ratio = 25.0;
+};
+
+// Every violated constraint as "parameter: value is not in range" text; empty when valid.
+std::vector<std::string> validateCharpyParameters(const CharpyParameters& parameters);

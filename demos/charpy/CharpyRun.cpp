@@ -1,0 +1,105 @@
+#include "CharpyRun.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "CharpyScene.h"
+
+CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history)
+{
+	const auto start = std::chrono::steady_clock::now();
+	CharpyScene scene(parameters);
+	CharpyResult r;
+	r.method = std::string(charpyMethodName(parameters.method));
+	r.dt_s = parameters.dt_s;
+	r.auto_dt = parameters.auto_dt;
+	r.iterations = parameters.solver_iterations;
+	r.E0_J = scene.initialEnergy_j();
+	r.analytic_J = scene.section().analytic_loss_j;
+	r.theta_pass_rad = scene.section().theta_pass_rad;
+	r.plastic_moment_Nm = scene.section().plastic_moment_nm;
+	r.impact_speed_m_s = scene.impactSpeed_m_s();
+	if (history)
+	{
+		*history << "time_s,potential_J,kinetic_J,elastic_J,total_J,plastic_work_J,bend_angle_rad,hammer_angle_rad\n";
+	}
+	while (scene.time_s() < parameters.duration_s - 1e-12 && scene.finite())
+	{
+		scene.step();
+		r.frames++;
+		if (history)
+		{
+			CharpyEnergies e = scene.energies();
+			char line[256];
+			std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", scene.time_s(), e.potential_j, e.kinetic_j,
+						  e.elastic_j, e.total_j, scene.plasticWork_j(), scene.bendAngle_rad(), scene.hammerAngle_rad());
+			*history << line;
+		}
+	}
+	r.internal_steps = scene.internalSteps();
+	r.finite = scene.finite();
+	r.E_end_J = scene.energies().total_j;
+	r.energy_loss_J = r.E0_J - r.E_end_J;
+	r.plastic_work_J = scene.plasticWork_j();
+	r.other_loss_J = r.energy_loss_J - r.plastic_work_J;
+	r.error_pct = 100.0 * (r.energy_loss_J - r.analytic_J) / r.analytic_J;
+	r.plastic_rotation_rad = scene.plasticRotation_rad();
+	r.bend_angle_rad = scene.bendAngle_rad();
+	r.max_energy_gain_J = scene.maxEnergyGain_j();
+	r.max_penetration_m = scene.maxPenetration_m();
+	r.broken = scene.broken();
+	r.passed_anvils = scene.passedAnvils();
+	r.tunnelled = r.passed_anvils && parameters.method == CharpyMethod::RigidBody;
+	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+	return r;
+}
+
+namespace
+{
+std::string number(double value)
+{
+	if (!std::isfinite(value))
+	{
+		return "null";
+	}
+	char text[64];
+	std::snprintf(text, sizeof text, "%.9g", value);
+	return text;
+}
+}  // namespace
+
+std::string toJson(const CharpyResult& r)
+{
+	std::ostringstream out;
+	auto flag = [](bool b) { return b ? "true" : "false"; };
+	out << "{\"method\":\"" << r.method << "\",\"dt\":" << number(r.dt_s) << ",\"auto_dt\":" << flag(r.auto_dt)
+		<< ",\"iterations\":" << r.iterations << ",\"steps\":" << r.internal_steps << ",\"frames\":" << r.frames
+		<< ",\"wall_s\":" << number(r.wall_s) << ",\"E0_J\":" << number(r.E0_J) << ",\"E_end_J\":" << number(r.E_end_J)
+		<< ",\"energy_loss_J\":" << number(r.energy_loss_J) << ",\"plastic_work_J\":" << number(r.plastic_work_J)
+		<< ",\"other_loss_J\":" << number(r.other_loss_J) << ",\"analytic_J\":" << number(r.analytic_J)
+		<< ",\"theta_pass_rad\":" << number(r.theta_pass_rad) << ",\"plastic_moment_Nm\":" << number(r.plastic_moment_Nm)
+		<< ",\"error_pct\":" << number(r.error_pct) << ",\"plastic_rotation_rad\":" << number(r.plastic_rotation_rad)
+		<< ",\"bend_angle_rad\":" << number(r.bend_angle_rad) << ",\"impact_speed_m_s\":" << number(r.impact_speed_m_s)
+		<< ",\"broken\":" << flag(r.broken) << ",\"passed_anvils\":" << flag(r.passed_anvils)
+		<< ",\"tunnelled\":" << flag(r.tunnelled) << ",\"finite\":" << flag(r.finite)
+		<< ",\"max_energy_gain_J\":" << number(r.max_energy_gain_J) << ",\"max_penetration_m\":" << number(r.max_penetration_m) << "}";
+	return out.str();
+}
+
+std::string toSummary(const CharpyResult& r)
+{
+	char text[1024];
+	std::snprintf(text, sizeof text,
+				  "Charpy impact test, method %s, dt %g s%s, %d iterations: %ld internal steps in %.3f s wall time\n"
+				  "  hammer energy E0 %.2f J, impact speed %.3f m/s\n"
+				  "  energy loss %.2f J (plastic work %.2f J, other %.2f J); analytic Mp * theta_pass = %.2f N m * %.4f rad = %.2f J; error %+.2f %%\n"
+				  "  plastic rotation %.3f rad, broken %s, passed anvils %s%s, max energy gain %.3g J, max penetration %.3g m%s\n",
+				  r.method.c_str(), r.dt_s, r.auto_dt ? " (auto)" : "", r.iterations, r.internal_steps, r.wall_s, r.E0_J,
+				  r.impact_speed_m_s, r.energy_loss_J, r.plastic_work_J, r.other_loss_J, r.plastic_moment_Nm, r.theta_pass_rad,
+				  r.analytic_J, r.error_pct, r.plastic_rotation_rad, r.broken ? "yes" : "no", r.passed_anvils ? "yes" : "no",
+				  r.tunnelled ? " (TUNNELLED: a rigid specimen cannot pass)" : "", r.max_energy_gain_J, r.max_penetration_m,
+				  r.finite ? "" : "\n  NOT FINITE: the simulation produced NaN or infinity");
+	return text;
+}

@@ -1,0 +1,44 @@
+// Runs a Charpy scene to its duration and summarises the energy balance.
+#pragma once
+
+#include <ostream>
+#include <string>
+
+#include "CharpyParameters.h"
+
+struct CharpyResult
+{
+	std::string method;
+	double dt_s = 0;
+	bool auto_dt = false;
+	int iterations = 0;
+	long frames = 0;
+	long internal_steps = 0;
+	double wall_s = 0;
+	double E0_J = 0;
+	double E_end_J = 0;
+	double energy_loss_J = 0;
+	double plastic_work_J = 0;
+	double other_loss_J = 0;  // energy_loss - plastic_work: contacts, friction, solver
+	double analytic_J = 0;
+	double theta_pass_rad = 0;
+	double plastic_moment_Nm = 0;
+	double error_pct = 0;     // (energy_loss - analytic) / analytic
+	double plastic_rotation_rad = 0;
+	double bend_angle_rad = 0;
+	double impact_speed_m_s = 0;
+	double max_energy_gain_J = 0;
+	double max_penetration_m = 0;
+	bool broken = false;
+	bool passed_anvils = false;
+	bool tunnelled = false;   // a rigid specimen got past the anvils: only possible through penetration
+	bool finite = true;
+};
+
+// history: if not null, receives the per-frame CSV time history (with a header line).
+CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history = nullptr);
+
+// One JSON object on one line.
+std::string toJson(const CharpyResult& result);
+// Human-readable summary, several lines.
+std::string toSummary(const CharpyResult& result);

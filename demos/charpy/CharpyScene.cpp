@@ -1,0 +1,675 @@
+#include "CharpyScene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "btBulletDynamicsCommon.h"
+#include "BulletDynamics/ConstraintSolver/btGeneric6DofSpring2Constraint.h"
+
+namespace
+{
+constexpr double kGravity_m_s2 = 9.81;
+constexpr double kMargin_m = 0.0005;      // collision margin of the small boxes (Bullet's default 0.04 m is 4x the specimen)
+constexpr double kNoseHeight_m = 0.02;    // striker nose along Y
+constexpr double kAnvilDepth_m = 0.04;    // anvils along X, behind the specimen
+constexpr double kStartGap_m = 0.003;     // the hammer nose starts this far in front of the specimen
+constexpr double kShearFactor = 0.5773502691896258;  // 1 / sqrt(3): von Mises shear yield
+constexpr double kPoisson = 0.3;
+
+btTransform translation(double x, double y, double z)
+{
+	btTransform t;
+	t.setIdentity();
+	t.setOrigin(btVector3(btScalar(x), btScalar(y), btScalar(z)));
+	return t;
+}
+
+// Capacities (N, N m) and elastic stiffnesses (N/m, N m/rad) of a b x h section (h along X) joining two
+// parts whose centres are segment_m apart, in the 6DOF frame used below: frame X = world Y (the bending
+// axis of the impact), frame Y = world -X, frame Z = world Z (the specimen axis).
+struct SectionDofs
+{
+	double maxForce[6];
+	double stiffness[6];
+};
+
+SectionDofs sectionDofs(const CharpyParameters& p, double h, double segment_m)
+{
+	const double b = p.specimen_width_m;
+	const double fy = p.yield_stress_pa;
+	const double E = p.youngs_modulus_pa;
+	const double G = E / (2.0 * (1.0 + kPoisson));
+	const double A = b * h;
+	const double shortSide = std::min(b, h), longSide = std::max(b, h);
+	SectionDofs s{};
+	// linear: frame X (world Y) and Y (world X) shear, Z axial
+	s.maxForce[0] = s.maxForce[1] = kShearFactor * fy * A;
+	s.maxForce[2] = fy * A;
+	s.stiffness[0] = s.stiffness[1] = G * A / segment_m;
+	s.stiffness[2] = E * A / segment_m;
+	// angular: frame X (world Y) bending by the impact, frame Y (world X) bending the other way, Z torsion
+	s.maxForce[3] = fy * b * h * h / 4.0;
+	s.maxForce[4] = fy * h * b * b / 4.0;
+	s.maxForce[5] = kShearFactor * fy * shortSide * shortSide * (3.0 * longSide - shortSide) / 6.0;
+	s.stiffness[3] = E * (b * h * h * h / 12.0) / segment_m;
+	s.stiffness[4] = E * (h * b * b * b / 12.0) / segment_m;
+	s.stiffness[5] = G * (0.141 * longSide * shortSide * shortSide * shortSide) / segment_m;
+	return s;
+}
+}  // namespace
+
+struct CharpyScene::Impl
+{
+	btDefaultCollisionConfiguration collisionConfiguration;
+	btCollisionDispatcher dispatcher{&collisionConfiguration};
+	btDbvtBroadphase broadphase;
+	btSequentialImpulseConstraintSolver solver;
+	btAlignedObjectArray<btCollisionShape*> shapes;
+	btAlignedObjectArray<btRigidBody*> bodies;
+	btAlignedObjectArray<btTypedConstraint*> constraints;
+	btAlignedObjectArray<btMotionState*> motionStates;
+	btHingeConstraint* hammerPivot = nullptr;
+	btVector3 pivot_m;
+
+	btRigidBody* addBody(btDiscreteDynamicsWorld* world, btCollisionShape* shape, double mass_kg, const btVector3& inertia,
+						 const btTransform& transform, double friction, double restitution)
+	{
+		shapes.push_back(shape);
+		auto* motionState = new btDefaultMotionState(transform);
+		motionStates.push_back(motionState);
+		btRigidBody::btRigidBodyConstructionInfo info(btScalar(mass_kg), motionState, shape, inertia);
+		info.m_friction = btScalar(friction);
+		info.m_restitution = btScalar(restitution);
+		auto* body = new btRigidBody(info);
+		if (mass_kg > 0)
+		{
+			body->setActivationState(DISABLE_DEACTIVATION);
+		}
+		world->addRigidBody(body);
+		bodies.push_back(body);
+		return body;
+	}
+
+	btBoxShape* box(double hx, double hy, double hz)
+	{
+		auto* shape = new btBoxShape(btVector3(btScalar(hx), btScalar(hy), btScalar(hz)));
+		shape->setMargin(btScalar(kMargin_m));
+		return shape;
+	}
+};
+
+CharpyScene::CharpyScene(const CharpyParameters& parameters)
+	: m_parameters(parameters)
+{
+	std::vector<std::string> errors = validateCharpyParameters(parameters);
+	if (!errors.empty())
+	{
+		std::string text;
+		for (const std::string& e : errors)
+		{
+			text += (text.empty() ? "" : "\n") + e;
+		}
+		throw std::invalid_argument(text);
+	}
+	m_section = computeCharpySection(parameters);
+	m_impl = std::make_unique<Impl>();
+	createWorld();
+	createAnvils();
+	createSpecimen();
+	createJoints();
+	createHammer();
+	m_initialEnergy_j = energies().total_j;
+	m_previousBend_rad = bendAngle_rad();
+}
+
+CharpyScene::~CharpyScene()
+{
+	for (int i = m_impl->constraints.size() - 1; i >= 0; i--)
+	{
+		m_world->removeConstraint(m_impl->constraints[i]);
+		delete m_impl->constraints[i];
+	}
+	for (int i = m_impl->bodies.size() - 1; i >= 0; i--)
+	{
+		m_world->removeRigidBody(m_impl->bodies[i]);
+		delete m_impl->bodies[i];
+	}
+	for (int i = 0; i < m_impl->motionStates.size(); i++) delete m_impl->motionStates[i];
+	for (int i = 0; i < m_impl->shapes.size(); i++) delete m_impl->shapes[i];
+	m_world.reset();
+}
+
+void CharpyScene::createWorld()
+{
+	m_world = std::make_unique<btDiscreteDynamicsWorld>(&m_impl->dispatcher, &m_impl->broadphase, &m_impl->solver,
+														&m_impl->collisionConfiguration);
+	m_world->setGravity(btVector3(0, btScalar(-kGravity_m_s2), 0));
+	m_world->getSolverInfo().m_numIterations = m_parameters.solver_iterations;
+}
+
+void CharpyScene::createAnvils()
+{
+	const CharpyParameters& p = m_parameters;
+	const double y0 = p.specimen_bottom_y_m, b = p.specimen_width_m;
+	const double zCentre = p.anvil_gap_m / 2.0 + p.anvil_width_m / 2.0;
+	for (double side : {-1.0, 1.0})
+	{
+		// the anvil behind the specimen (x < 0) and a ledge under it that carries its weight
+		btTransform anvil = translation(-kAnvilDepth_m / 2.0, y0 + b / 2.0, side * zCentre);
+		btTransform ledge = translation(b, y0 - 0.01, side * zCentre);
+		m_anvils.push_back(m_impl->addBody(m_world.get(), m_impl->box(kAnvilDepth_m / 2.0, 2.0 * b, p.anvil_width_m / 2.0), 0,
+										   btVector3(0, 0, 0), anvil, 1.0, 0.0));
+		m_anvils.push_back(m_impl->addBody(m_world.get(), m_impl->box(b, 0.01, p.anvil_width_m / 2.0), 0, btVector3(0, 0, 0),
+										   ledge, 1.0, 0.0));
+	}
+}
+
+void CharpyScene::createSpecimen()
+{
+	const CharpyParameters& p = m_parameters;
+	const double b = p.specimen_width_m, L = p.specimen_length_m;
+	const int n = p.method == CharpyMethod::RigidBody ? 1 : p.parts;
+	const double partLength = L / n;
+	const double mass = p.density_kg_m3 * b * b * partLength;
+	for (int i = 0; i < n; i++)
+	{
+		btBoxShape* shape = m_impl->box(b / 2.0, b / 2.0, partLength / 2.0);
+		btVector3 inertia;
+		shape->calculateLocalInertia(btScalar(mass), inertia);
+		double z = -L / 2.0 + (i + 0.5) * partLength;
+		m_parts.push_back(m_impl->addBody(m_world.get(), shape, mass, inertia, translation(b / 2.0, p.specimen_bottom_y_m + b / 2.0, z),
+										  p.friction, 0.0));
+	}
+}
+
+btTypedConstraint* CharpyScene::createJoint(btRigidBody* a, btRigidBody* b, double zInterface_m, bool notched)
+{
+	const CharpyParameters& p = m_parameters;
+	const double width = p.specimen_width_m;
+	const double h = notched ? m_section.ligament_m : width;
+	const double hingeX = notched ? m_section.hinge_offset_m : width / 2.0;
+	const double segment = p.specimen_length_m / p.parts;
+	const btVector3 pivot(btScalar(hingeX), btScalar(p.specimen_bottom_y_m + width / 2.0), btScalar(zInterface_m));
+	const btVector3 pivotInA = a->getCenterOfMassTransform().inverse() * pivot;
+	const btVector3 pivotInB = b->getCenterOfMassTransform().inverse() * pivot;
+	const SectionDofs dofs = sectionDofs(p, h, segment);
+	const double plasticMoment = dofs.maxForce[3];
+
+	// 6DOF frames: frame X = world Y, so the impact bends the joint about the frame's X axis (range +/-pi)
+	btTransform frameA, frameB;
+	frameA.setIdentity();
+	frameA.getBasis().setEulerZYX(0, 0, btScalar(M_PI / 2.0));
+	frameB = frameA;
+	frameA.setOrigin(pivotInA);
+	frameB.setOrigin(pivotInB);
+
+	switch (p.method)
+	{
+		case CharpyMethod::RigidBody:
+			return nullptr;
+		case CharpyMethod::BrittleZeroLimits:
+		{
+			auto* c = new btGeneric6DofConstraint(*a, *b, frameA, frameB, true);
+			c->setLinearLowerLimit(btVector3(0, 0, 0));
+			c->setLinearUpperLimit(btVector3(0, 0, 0));
+			c->setAngularLowerLimit(btVector3(0, 0, 0));
+			c->setAngularUpperLimit(btVector3(0, 0, 0));
+			return c;  // breaking threshold set per internal step: brittle_breaking_force_n * h
+		}
+		case CharpyMethod::Spring:
+		{
+			auto* c = new btGeneric6DofSpringConstraint(*a, *b, frameA, frameB, true);
+			c->setLinearLowerLimit(btVector3(0, 0, 0));
+			c->setLinearUpperLimit(btVector3(0, 0, 0));
+			c->setAngularLowerLimit(btVector3(1, 1, 1));  // free: the springs act
+			c->setAngularUpperLimit(btVector3(-1, -1, -1));
+			for (int i = 3; i < 6; i++)
+			{
+				c->enableSpring(i, true);
+				c->setStiffness(i, btScalar(dofs.maxForce[i]));  // thesis 2.5: Mp per rad
+			}
+			c->setEquilibriumPoint();
+			return c;
+		}
+		case CharpyMethod::Spring2:
+		{
+			auto* c = new btGeneric6DofSpring2Constraint(*a, *b, frameA, frameB);
+			c->setLinearLowerLimit(btVector3(0, 0, 0));
+			c->setLinearUpperLimit(btVector3(0, 0, 0));
+			c->setAngularLowerLimit(btVector3(1, 1, 1));
+			c->setAngularUpperLimit(btVector3(-1, -1, -1));
+			for (int i = 3; i < 6; i++)
+			{
+				c->enableSpring(i, true);
+				c->setStiffness(i, btScalar(dofs.maxForce[i]));  // limitIfNeeded = true, as upstream users would
+			}
+			c->setEquilibriumPoint();
+			return c;
+		}
+		case CharpyMethod::HingeMotor:
+		case CharpyMethod::PlasticHinge:
+		{
+			const btVector3 axis(0, 1, 0);
+			const btVector3 axisInA = a->getCenterOfMassTransform().getBasis().transpose() * axis;
+			const btVector3 axisInB = b->getCenterOfMassTransform().getBasis().transpose() * axis;
+			if (p.method == CharpyMethod::HingeMotor)
+			{
+				auto* c = new btHingeConstraint(*a, *b, pivotInA, pivotInB, axisInA, axisInB);
+				c->enableAngularMotor(true, 0, 0);  // max impulse set per internal step: Mp * h
+				return c;
+			}
+			auto* c = new btPlasticHingeConstraint(*a, *b, pivotInA, pivotInB, axisInA, axisInB);
+			c->setPlasticMoment(btScalar(plasticMoment));
+			c->setMaxPlasticRotation(btScalar(p.max_plastic_rotation_rad));
+			return c;
+		}
+		case CharpyMethod::ElasticPlastic:
+		{
+			auto* c = new bt6DofElasticPlasticConstraint(*a, *b, frameA, frameB, true);
+			for (int i = 0; i < 6; i++)
+			{
+				c->setStiffness(i, btScalar(dofs.stiffness[i]));
+				c->setMaxForce(i, btScalar(dofs.maxForce[i]));
+			}
+			c->setMaxPlasticRotation(btScalar(p.max_plastic_rotation_rad));
+			c->setFrequencyRatio(btScalar(p.frequency_ratio));
+			return c;
+		}
+		case CharpyMethod::ElasticPlastic2:
+		{
+			auto* c = new bt6DofElasticPlastic2Constraint(*a, *b, frameA, frameB);
+			for (int i = 0; i < 6; i++)
+			{
+				c->setStiffness(i, btScalar(dofs.stiffness[i]), false);
+				c->setMaxForce(i, btScalar(dofs.maxForce[i]));
+			}
+			c->setMaxPlasticRotation(btScalar(p.max_plastic_rotation_rad));
+			c->setFrequencyRatio(btScalar(p.frequency_ratio));
+			return c;
+		}
+	}
+	return nullptr;
+}
+
+void CharpyScene::createJoints()
+{
+	const int n = static_cast<int>(m_parts.size());
+	for (int i = 0; i + 1 < n; i++)
+	{
+		double z = -m_parameters.specimen_length_m / 2.0 + (i + 1) * m_parameters.specimen_length_m / n;
+		bool notched = (i + 1) * 2 == n;
+		btTypedConstraint* joint = createJoint(m_parts[i], m_parts[i + 1], z, notched);
+		if (!joint)
+		{
+			continue;
+		}
+		m_world->addConstraint(joint, true);
+		m_impl->constraints.push_back(joint);
+		m_joints.push_back(joint);
+		if (notched)
+		{
+			m_middleJoint = joint;
+		}
+	}
+}
+
+void CharpyScene::createHammer()
+{
+	const CharpyParameters& p = m_parameters;
+	if (p.hammer_thickness_m <= 0)
+	{
+		return;
+	}
+	const double L = p.hammer_length_m, H = p.hammer_height_m, T = p.hammer_thickness_m;
+	// Local frame at the head's centre of mass. The striker nose tip is at (-(L/2 + draft), 0, 0); the pivot is
+	// straight above it, so the impact is horizontal. The arm and nose take no part in mass and inertia (thesis 2.2.5).
+	auto* compound = new btCompoundShape();
+	btBoxShape* head = m_impl->box(L / 2.0, H / 2.0, T / 2.0);
+	head->setMargin(btScalar(0.001));
+	compound->addChildShape(translation(0, 0, 0), head);
+	m_impl->shapes.push_back(head);
+	if (p.hammer_draft_m > 0)
+	{
+		btBoxShape* nose = m_impl->box(p.hammer_draft_m / 2.0, kNoseHeight_m / 2.0, T / 2.0);
+		compound->addChildShape(translation(-(L / 2.0 + p.hammer_draft_m / 2.0), 0, 0), nose);
+		m_impl->shapes.push_back(nose);
+	}
+	btVector3 inertia;
+	head->calculateLocalInertia(btScalar(p.hammer_mass_kg), inertia);
+
+	const double tipX = L / 2.0 + p.hammer_draft_m;  // tip is at local x = -tipX
+	const double armDrop = H / 2.0 + p.hammer_arm_length_m;
+	const double yImpact = p.specimen_bottom_y_m + p.specimen_width_m / 2.0;
+	const btVector3 pivot(btScalar(p.specimen_width_m), btScalar(yImpact + armDrop), 0);
+	const btVector3 pivotLocal(btScalar(-tipX), btScalar(armDrop), 0);
+	m_impl->pivot_m = pivot;
+
+	// start rotated back about +Z so the tip is kStartGap_m in front of the specimen
+	const double startAngle = std::asin(kStartGap_m / armDrop);
+	btTransform atImpact = translation(pivot.x() - pivotLocal.x(), pivot.y() - pivotLocal.y(), 0);
+	btTransform rotation;
+	rotation.setIdentity();
+	rotation.setRotation(btQuaternion(btVector3(0, 0, 1), btScalar(startAngle)));
+	btTransform aroundPivot = translation(pivot.x(), pivot.y(), 0) * rotation * translation(-pivot.x(), -pivot.y(), 0);
+	btTransform start = aroundPivot * atImpact;
+
+	m_hammer = m_impl->addBody(m_world.get(), compound, p.hammer_mass_kg, inertia, start, 1.0, 0.0);
+	auto* pivotJoint = new btHingeConstraint(*m_hammer, pivotLocal, btVector3(0, 0, 1));
+	m_world->addConstraint(pivotJoint, true);
+	m_impl->constraints.push_back(pivotJoint);
+	m_impl->hammerPivot = pivotJoint;
+
+	// hammer energy above its hanging rest position: from the release angle or given directly
+	const btVector3 comOffset = start.getOrigin() - pivot;  // pivot -> centre of mass
+	const double Rc = comOffset.length();
+	const double m = p.hammer_mass_kg;
+	const double releaseEnergy = p.initial_energy_j > 0 ? p.initial_energy_j : m * kGravity_m_s2 * Rc * (1.0 - std::cos(p.release_angle_rad));
+	const double heightAboveRest = comOffset.y() + Rc;
+	const double kinetic = releaseEnergy - m * kGravity_m_s2 * heightAboveRest;
+	if (!(kinetic > 0))
+	{
+		throw std::invalid_argument("release-angle / initial-energy: the hammer does not reach the specimen (energy " +
+									std::to_string(releaseEnergy) + " J, needs more than " +
+									std::to_string(m * kGravity_m_s2 * heightAboveRest) + " J)");
+	}
+	const double inertiaAboutPivot = inertia.z() + m * Rc * Rc;
+	const double omega = std::sqrt(2.0 * kinetic / inertiaAboutPivot);
+	// swing towards -X: negative rotation about +Z
+	const btVector3 angularVelocity(0, 0, btScalar(-omega));
+	m_hammer->setAngularVelocity(angularVelocity);
+	m_hammer->setLinearVelocity(angularVelocity.cross(comOffset));
+	m_impactSpeed_m_s = omega * armDrop;
+}
+
+bool CharpyScene::nearContact(double horizon_s) const
+{
+	auto reach = [horizon_s](const btRigidBody* body, btVector3& lo, btVector3& hi) {
+		body->getAabb(lo, hi);
+		btScalar radius = (hi - lo).length() / 2;
+		btScalar travel = btScalar((body->getLinearVelocity().length() + body->getAngularVelocity().length() * radius) * horizon_s);
+		btVector3 grow(travel + btScalar(0.001), travel + btScalar(0.001), travel + btScalar(0.001));
+		lo -= grow;
+		hi += grow;
+	};
+	auto overlap = [](const btVector3& aLo, const btVector3& aHi, const btVector3& bLo, const btVector3& bHi) {
+		return aLo.x() <= bHi.x() && bLo.x() <= aHi.x() && aLo.y() <= bHi.y() && bLo.y() <= aHi.y() && aLo.z() <= bHi.z() && bLo.z() <= aHi.z();
+	};
+	btVector3 hLo, hHi;
+	if (m_hammer)
+	{
+		reach(m_hammer, hLo, hHi);
+	}
+	for (const btRigidBody* part : m_parts)
+	{
+		btVector3 pLo, pHi;
+		reach(part, pLo, pHi);
+		if (m_hammer && overlap(pLo, pHi, hLo, hHi))
+		{
+			return true;
+		}
+		for (const btRigidBody* anvil : m_anvils)
+		{
+			btVector3 aLo, aHi;
+			anvil->getAabb(aLo, aHi);
+			if (overlap(pLo, pHi, aLo, aHi))
+			{
+				return true;
+			}
+		}
+	}
+	return false;
+}
+
+void CharpyScene::step()
+{
+	const CharpyParameters& p = m_parameters;
+	double frame = p.dt_s;
+	if (p.auto_dt && p.auto_dt_coarse_s > frame && !nearContact(p.auto_dt_coarse_s))
+	{
+		frame = p.auto_dt_coarse_s;
+	}
+	int substeps = 1;
+	if (p.contact_substep_s > 0 && p.contact_substep_s < frame && nearContact(frame))
+	{
+		substeps = static_cast<int>(std::ceil(frame / p.contact_substep_s - 1e-9));
+	}
+	const double h = frame / substeps;
+	for (int i = 0; i < substeps; i++)
+	{
+		internalStep(h);
+	}
+	m_lastFrameStep_s = frame;
+}
+
+void CharpyScene::internalStep(double h_s)
+{
+	// per-step work only the upstream methods need: their caps are impulses, so they follow the internal step
+	const btScalar h = btScalar(h_s);
+	if (m_parameters.method == CharpyMethod::HingeMotor)
+	{
+		for (btTypedConstraint* joint : m_joints)
+		{
+			auto* hinge = static_cast<btHingeConstraint*>(joint);
+			double moment = joint == m_middleJoint ? m_section.plastic_moment_nm : sectionDofs(m_parameters, m_parameters.specimen_width_m, 1.0).maxForce[3];
+			hinge->setMaxMotorImpulse(btScalar(moment) * h);
+		}
+	}
+	else if (m_parameters.method == CharpyMethod::BrittleZeroLimits)
+	{
+		for (btTypedConstraint* joint : m_joints)
+		{
+			joint->setBreakingImpulseThreshold(btScalar(m_parameters.brittle_breaking_force_n) * h);
+		}
+	}
+	m_world->stepSimulation(h, 0);
+	m_time_s += h_s;
+	m_internalSteps++;
+	trackAfterStep(h_s);
+}
+
+void CharpyScene::trackAfterStep(double h_s)
+{
+	if (m_parameters.method == CharpyMethod::HingeMotor && m_middleJoint && m_middleJoint->isEnabled())
+	{
+		// the motor row is the hinge's last row: its impulse is getAppliedImpulse()
+		double bend = bendAngle_rad();
+		double rotation = std::fabs(bend - m_previousBend_rad);
+		double cap = m_section.plastic_moment_nm * h_s;
+		if (std::fabs(m_middleJoint->getAppliedImpulse()) >= cap * (1.0 - 1e-3))
+		{
+			m_motorWork_j += m_section.plastic_moment_nm * rotation;
+			m_motorRotation_rad += rotation;
+		}
+		m_previousBend_rad = bend;
+	}
+	const double gain = energies().total_j - m_initialEnergy_j;
+	m_maxEnergyGain_j = std::max(m_maxEnergyGain_j, gain);
+
+	btDispatcher* dispatcher = m_world->getDispatcher();
+	for (int i = 0; i < dispatcher->getNumManifolds(); i++)
+	{
+		btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(i);
+		for (int j = 0; j < manifold->getNumContacts(); j++)
+		{
+			m_maxPenetration_m = std::max(m_maxPenetration_m, -double(manifold->getContactPoint(j).getDistance()));
+		}
+	}
+}
+
+CharpyEnergies CharpyScene::energies() const
+{
+	CharpyEnergies e;
+	for (int i = 0; i < m_impl->bodies.size(); i++)
+	{
+		const btRigidBody* body = m_impl->bodies[i];
+		if (body->getInvMass() == 0)
+		{
+			continue;
+		}
+		const double m = 1.0 / body->getInvMass();
+		e.potential_j += m * kGravity_m_s2 * body->getCenterOfMassPosition().y();
+		const btVector3& v = body->getLinearVelocity();
+		const btVector3& w = body->getAngularVelocity();
+		btVector3 localW = body->getWorldTransform().getBasis().transpose() * w;
+		btVector3 inertia = body->getLocalInertia();
+		e.kinetic_j += 0.5 * m * v.length2() + 0.5 * (inertia.x() * localW.x() * localW.x() + inertia.y() * localW.y() * localW.y() + inertia.z() * localW.z() * localW.z());
+	}
+	for (btTypedConstraint* joint : m_joints)
+	{
+		if (!joint->isEnabled())
+		{
+			continue;
+		}
+		switch (m_parameters.method)
+		{
+			case CharpyMethod::Spring:
+			{
+				auto* c = static_cast<btGeneric6DofSpringConstraint*>(joint);
+				c->calculateTransforms();
+				for (int i = 0; i < 3; i++)
+				{
+					double angle = c->getAngle(i) - c->getEquilibriumPoint(i + 3);
+					e.elastic_j += 0.5 * c->getStiffness(i + 3) * angle * angle;
+				}
+				break;
+			}
+			case CharpyMethod::Spring2:
+			{
+				auto* c = static_cast<btGeneric6DofSpring2Constraint*>(joint);
+				c->calculateTransforms();
+				for (int i = 0; i < 3; i++)
+				{
+					double angle = c->getAngle(i) - c->getRotationalLimitMotor(i)->m_equilibriumPoint;
+					e.elastic_j += 0.5 * c->getRotationalLimitMotor(i)->m_springStiffness * angle * angle;
+				}
+				break;
+			}
+			case CharpyMethod::ElasticPlastic:
+				e.elastic_j += static_cast<bt6DofElasticPlasticConstraint*>(joint)->getElasticEnergy();
+				break;
+			case CharpyMethod::ElasticPlastic2:
+				e.elastic_j += static_cast<bt6DofElasticPlastic2Constraint*>(joint)->getElasticEnergy();
+				break;
+			default:
+				break;
+		}
+	}
+	e.total_j = e.potential_j + e.kinetic_j + e.elastic_j;
+	return e;
+}
+
+double CharpyScene::plasticWork_j() const
+{
+	double work = 0;
+	for (btTypedConstraint* joint : m_joints)
+	{
+		switch (m_parameters.method)
+		{
+			case CharpyMethod::PlasticHinge:
+				work += static_cast<btPlasticHingeConstraint*>(joint)->getAbsorbedEnergy();
+				break;
+			case CharpyMethod::ElasticPlastic:
+				work += static_cast<bt6DofElasticPlasticConstraint*>(joint)->getAbsorbedEnergy();
+				break;
+			case CharpyMethod::ElasticPlastic2:
+				work += static_cast<bt6DofElasticPlastic2Constraint*>(joint)->getAbsorbedEnergy();
+				break;
+			default:
+				break;
+		}
+	}
+	return m_parameters.method == CharpyMethod::HingeMotor ? m_motorWork_j : work;
+}
+
+double CharpyScene::plasticRotation_rad() const
+{
+	double rotation = 0;
+	for (btTypedConstraint* joint : m_joints)
+	{
+		switch (m_parameters.method)
+		{
+			case CharpyMethod::PlasticHinge:
+				rotation += static_cast<btPlasticHingeConstraint*>(joint)->getCurrentPlasticRotation();
+				break;
+			case CharpyMethod::ElasticPlastic:
+				rotation += static_cast<bt6DofElasticPlasticConstraint*>(joint)->getCurrentPlasticRotation();
+				break;
+			case CharpyMethod::ElasticPlastic2:
+				rotation += static_cast<bt6DofElasticPlastic2Constraint*>(joint)->getCurrentPlasticRotation();
+				break;
+			default:
+				break;
+		}
+	}
+	return m_parameters.method == CharpyMethod::HingeMotor ? m_motorRotation_rad : rotation;
+}
+
+double CharpyScene::bendAngle_rad() const
+{
+	if (m_parts.size() < 2)
+	{
+		return 0;
+	}
+	const size_t mid = m_parts.size() / 2;
+	btQuaternion worldRelative = m_parts[mid]->getOrientation() * m_parts[mid - 1]->getOrientation().inverse();
+	double angle = worldRelative.getAngleShortestPath();
+	btVector3 axis = worldRelative.getAxis();
+	return axis.y() < 0 ? -angle : angle;
+}
+
+double CharpyScene::hammerAngle_rad() const
+{
+	if (!m_hammer)
+	{
+		return 0;
+	}
+	btQuaternion q = m_hammer->getOrientation();
+	double angle = q.getAngleShortestPath();
+	return q.getAxis().z() < 0 ? -angle : angle;
+}
+
+bool CharpyScene::broken() const
+{
+	for (btTypedConstraint* joint : m_joints)
+	{
+		if (!joint->isEnabled())
+		{
+			return true;
+		}
+	}
+	return false;
+}
+
+bool CharpyScene::passedAnvils() const
+{
+	for (const btRigidBody* part : m_parts)
+	{
+		btVector3 lo, hi;
+		part->getAabb(lo, hi);
+		if (hi.x() > 0)
+		{
+			return false;
+		}
+	}
+	return true;
+}
+
+bool CharpyScene::finite() const
+{
+	for (int i = 0; i < m_impl->bodies.size(); i++)
+	{
+		const btRigidBody* body = m_impl->bodies[i];
+		const btVector3& x = body->getCenterOfMassPosition();
+		const btVector3& v = body->getLinearVelocity();
+		const btVector3& w = body->getAngularVelocity();
+		for (int k = 0; k < 3; k++)
+		{
+			if (!std::isfinite(double(x[k])) || !std::isfinite(double(v[k])) || !std::isfinite(double(w[k])))
+			{
+				return false;
+			}
+		}
+	}
+	return true;
+}

@@ -1,0 +1,94 @@
+// The Charpy impact test scene (thesis section 2): built from CharpyParameters by this one piece of
+// code for the GUI example, the console runner, the tests and the reports. Only the bodies, joints and
+// per-step work that the chosen method needs are created.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "CharpyParameters.h"
+#include "CharpySection.h"
+
+class btDiscreteDynamicsWorld;
+class btRigidBody;
+class btTypedConstraint;
+
+struct CharpyEnergies
+{
+	double potential_j = 0;  // m g y of every dynamic body
+	double kinetic_j = 0;    // linear and rotational
+	double elastic_j = 0;    // held by springs / elastic-plastic joints
+	double total_j = 0;      // the sum of the three above
+};
+
+class CharpyScene
+{
+public:
+	// Throws std::invalid_argument listing every invalid parameter.
+	explicit CharpyScene(const CharpyParameters& parameters);
+	~CharpyScene();
+	CharpyScene(const CharpyScene&) = delete;
+	CharpyScene& operator=(const CharpyScene&) = delete;
+
+	// One frame: dt_s (or the coarse auto step far from contact), split into internal steps of at most
+	// contact_substep_s while the specimen is in or near contact.
+	void step();
+
+	const CharpyParameters& parameters() const { return m_parameters; }
+	const CharpySection& section() const { return m_section; }
+	double time_s() const { return m_time_s; }
+	long internalSteps() const { return m_internalSteps; }
+	double lastFrameStep_s() const { return m_lastFrameStep_s; }
+
+	CharpyEnergies energies() const;
+	double initialEnergy_j() const { return m_initialEnergy_j; }
+	double impactSpeed_m_s() const { return m_impactSpeed_m_s; }
+	double maxEnergyGain_j() const { return m_maxEnergyGain_j; }
+	double plasticWork_j() const;
+	double plasticRotation_rad() const;
+	double bendAngle_rad() const;    // relative rotation of the two middle parts about Y
+	double hammerAngle_rad() const;  // pendulum rotation about Z from the impact position
+	bool broken() const;
+	bool passedAnvils() const;       // every part is behind the anvils' front plane (x < 0)
+	double maxPenetration_m() const { return m_maxPenetration_m; }
+	bool finite() const;             // no NaN or infinity in any body state
+
+	btDiscreteDynamicsWorld* world() { return m_world.get(); }
+	const std::vector<btRigidBody*>& specimenParts() const { return m_parts; }
+	btRigidBody* hammer() const { return m_hammer; }
+
+private:
+	struct Impl;
+
+	void createWorld();
+	void createAnvils();
+	void createSpecimen();
+	void createJoints();
+	void createHammer();
+	btTypedConstraint* createJoint(btRigidBody* a, btRigidBody* b, double zInterface_m, bool notched);
+	bool nearContact(double horizon_s) const;
+	void internalStep(double h_s);
+	void trackAfterStep(double h_s);
+
+	CharpyParameters m_parameters;
+	CharpySection m_section;
+	std::unique_ptr<Impl> m_impl;  // Bullet's world objects, shapes and bodies
+	std::unique_ptr<btDiscreteDynamicsWorld> m_world;
+	std::vector<btRigidBody*> m_parts;
+	std::vector<btRigidBody*> m_anvils;
+	std::vector<btTypedConstraint*> m_joints;
+	btRigidBody* m_hammer = nullptr;
+	btTypedConstraint* m_middleJoint = nullptr;
+
+	double m_time_s = 0;
+	long m_internalSteps = 0;
+	double m_lastFrameStep_s = 0;
+	double m_initialEnergy_j = 0;
+	double m_impactSpeed_m_s = 0;
+	double m_maxEnergyGain_j = 0;
+	double m_maxPenetration_m = 0;
+	// hinge-motor method only: the motor's work and rotation while at its cap
+	double m_motorWork_j = 0;
+	double m_motorRotation_rad = 0;
+	double m_previousBend_rad = 0;
+};

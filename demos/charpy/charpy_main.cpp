@@ -1,0 +1,70 @@
+// build/bin/charpy: the Charpy impact test, headless, no OpenGL. See --help.
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+#include "CharpyCommandLine.h"
+#include "CharpyRun.h"
+
+int main(int argc, char** argv)
+{
+	std::vector<std::string> arguments(argv + 1, argv + argc);
+	CharpyCommandLine cl = parseCharpyCommandLine(arguments);
+	if (!cl.errors.empty())
+	{
+		for (const std::string& e : cl.errors)
+		{
+			std::cerr << "charpy: " << e << "\n";
+		}
+		return 2;
+	}
+	if (cl.help)
+	{
+		std::cout << charpyUsage();
+		return 0;
+	}
+	if (cl.listMethods)
+	{
+		for (int i = 1; i <= kCharpyMethodCount; i++)
+		{
+			CharpyMethod m = charpyMethodByNumber(i);
+			std::cout << charpyMethodName(m) << "\t" << i << "\t" << charpyMethodDescription(m) << "\n";
+		}
+		return 0;
+	}
+	try
+	{
+		std::ostringstream history;
+		CharpyResult result = runCharpy(cl.parameters, cl.historyPath.empty() ? nullptr : &history);
+		if (!cl.historyPath.empty())
+		{
+			// written whole or not at all: to a temporary name, then renamed
+			const std::string temporary = cl.historyPath + ".tmp";
+			{
+				std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+				file << history.str();
+				if (!file.flush())
+				{
+					std::cerr << "charpy: --history: cannot write " << temporary << "\n";
+					std::remove(temporary.c_str());
+					return 1;
+				}
+			}
+			if (std::rename(temporary.c_str(), cl.historyPath.c_str()) != 0)
+			{
+				std::cerr << "charpy: --history: cannot rename " << temporary << " to " << cl.historyPath << "\n";
+				std::remove(temporary.c_str());
+				return 1;
+			}
+		}
+		std::cout << (cl.json ? toJson(result) + "\n" : toSummary(result));
+		return result.finite ? 0 : 3;
+	}
+	catch (const std::invalid_argument& e)
+	{
+		std::cerr << "charpy: " << e.what() << "\n";
+		return 2;
+	}
+}
