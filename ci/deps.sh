@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs what the build and tests need on Debian bookworm (run as root), skipping what is there.
+set -euo pipefail
+packages=(cmake ninja-build pkg-config quilt g++ python3 python3-pip libgtest-dev libbenchmark-dev clang-format)
+missing=()
+for p in "${packages[@]}"; do
+	dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+	if [ "$(id -u)" != 0 ]; then
+		echo "ci/deps.sh: missing Debian packages: ${missing[*]} -- run: sudo apt-get install ${missing[*]}" >&2
+		exit 1
+	fi
+	echo "ci/deps.sh: installing ${missing[*]}"
+	apt-get update -qq
+	DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+# pip downloads the pinned sdist; any python3 with pip will do (a pyenv one included)
+python3 -m pip --version >/dev/null 2>&1 || { echo "ci/deps.sh: python3 has no pip: apt-get install python3-pip" >&2; exit 1; }

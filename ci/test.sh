@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# The whole test suite: install what is missing, build everything the tests need, run ctest.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash ci/deps.sh
+bash ci/configure.sh -DBP_BUILD_TESTS=ON
+cmake --build "${BUILD_DIR:-build}"
+cd "${BUILD_DIR:-build}"
+ctest --output-on-failure -j"$(nproc)"
