@@ -113,6 +113,7 @@ CharpyScene::CharpyScene(const CharpyParameters& parameters)
 		throw std::invalid_argument(text);
 	}
 	m_section = computeCharpySection(parameters);
+	m_fullSectionMoment_nm = sectionDofs(parameters, parameters.specimen_width_m, 1.0).maxForce[3];
 	m_impl = std::make_unique<Impl>();
 	createWorld();
 	createAnvils();
@@ -451,7 +452,7 @@ void CharpyScene::internalStep(double h_s)
 		for (btTypedConstraint* joint : m_joints)
 		{
 			auto* hinge = static_cast<btHingeConstraint*>(joint);
-			double moment = joint == m_middleJoint ? m_section.plastic_moment_nm : sectionDofs(m_parameters, m_parameters.specimen_width_m, 1.0).maxForce[3];
+			double moment = joint == m_middleJoint ? m_section.plastic_moment_nm : m_fullSectionMoment_nm;
 			hinge->setMaxMotorImpulse(btScalar(moment) * h);
 		}
 	}

@@ -72,6 +72,7 @@ private:
 
 	CharpyParameters m_parameters;
 	CharpySection m_section;
+	double m_fullSectionMoment_nm = 0;  // plastic moment of the unnotched section (joints away from the notch)
 	std::unique_ptr<Impl> m_impl;  // Bullet's world objects, shapes and bodies
 	std::unique_ptr<btDiscreteDynamicsWorld> m_world;
 	std::vector<btRigidBody*> m_parts;
