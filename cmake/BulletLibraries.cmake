@@ -7,11 +7,14 @@ if(BP_USE_DOUBLE_PRECISION)
 	list(APPEND BULLET_DEFINITIONS BT_USE_DOUBLE_PRECISION)
 endif()
 
-function(bp_add_bullet_library name)
-	file(GLOB_RECURSE sources CONFIGURE_DEPENDS "${BULLET_TREE}/src/${name}/*.cpp")
+# bp_add_bullet_library(<target> <tree> <folder>): the library <folder> (e.g. BulletDynamics)
+# of the Bullet tree <tree>, as the static library <target>.
+function(bp_add_bullet_library name tree folder)
+	file(GLOB_RECURSE sources CONFIGURE_DEPENDS "${tree}/src/${folder}/*.cpp")
 	add_library(${name} STATIC ${sources})
-	target_include_directories(${name} PUBLIC
-		$<BUILD_INTERFACE:${BULLET_TREE}/src>
+	# BEFORE: a second tree's headers (tests' unpatched BulletDynamics) win over the first's.
+	target_include_directories(${name} BEFORE PUBLIC
+		$<BUILD_INTERFACE:${tree}/src>
 		$<INSTALL_INTERFACE:include/bullet>)
 	target_compile_definitions(${name} PUBLIC ${BULLET_DEFINITIONS})
 	# Upstream code is compiled as upstream ships it; its warnings are not ours to fix here.
@@ -20,11 +23,13 @@ function(bp_add_bullet_library name)
 	if(BP_UNITY_BUILD)
 		set_target_properties(${name} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 16)
 	endif()
-	add_library(Bullet::${name} ALIAS ${name})
 endfunction()
 
-bp_add_bullet_library(LinearMath)
-bp_add_bullet_library(BulletCollision)
-bp_add_bullet_library(BulletDynamics)
+bp_add_bullet_library(LinearMath "${BULLET_TREE}" LinearMath)
+bp_add_bullet_library(BulletCollision "${BULLET_TREE}" BulletCollision)
+bp_add_bullet_library(BulletDynamics "${BULLET_TREE}" BulletDynamics)
+foreach(name LinearMath BulletCollision BulletDynamics)
+	add_library(Bullet::${name} ALIAS ${name})
+endforeach()
 target_link_libraries(BulletCollision PUBLIC LinearMath)
 target_link_libraries(BulletDynamics PUBLIC BulletCollision)
