@@ -17,7 +17,10 @@ set(BULLET_UPSTREAM_SHA256 "042879db8d101ac7590dee475fc6aded508b85fe1273fdbbfde1
 set(BULLET_UPSTREAM_TOPDIR "pybullet-3.2.7")
 
 # What is unpacked (paths relative to the top folder). The libraries need the
-# first group; the demo app (OpenGL / OSMesa) needs the second.
+# first group; the demo app (OpenGL / OSMesa) needs the second (BulletSoftBody
+# because the browser's OpenGLGuiHelper draws soft bodies; three headers that
+# OpenGLExampleBrowser.cpp includes). Both are always unpacked, since patches
+# 0006-0008 change files of the second group; only what a target needs is built.
 set(BULLET_UPSTREAM_LIBRARY_PATHS
 	LICENSE.txt
 	src/LinearMath
@@ -30,6 +33,7 @@ set(BULLET_UPSTREAM_LIBRARY_PATHS
 	src/btLinearMathAll.cpp)
 set(BULLET_UPSTREAM_DEMO_PATHS
 	src/Bullet3Common
+	src/BulletSoftBody
 	examples/OpenGLWindow
 	examples/CommonInterfaces
 	examples/ExampleBrowser
@@ -37,4 +41,7 @@ set(BULLET_UPSTREAM_DEMO_PATHS
 	examples/ThirdPartyLibs/glad
 	examples/ThirdPartyLibs/stb_image
 	examples/ThirdPartyLibs/Gwen
-	examples/ThirdPartyLibs/optionalX11)
+	examples/ThirdPartyLibs/optionalX11
+	examples/Importers/ImportURDFDemo/ImportURDFSetup.h
+	examples/Importers/ImportBullet/SerializeSetup.h
+	examples/SharedMemory/SharedMemoryPublic.h)

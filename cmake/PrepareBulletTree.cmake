@@ -3,7 +3,10 @@
 #
 #   cmake -DPROJECT_DIR=<repo> -DDEST=<tree> -DDOWNLOAD_DIR=<cache>
 #         [-DSERIES=<patches/series>] [-DARCHIVE=<tar.gz>] [-DSOURCE_DIR=<bullet tree>]
-#         [-DWITH_DEMO_PATHS=ON] -P cmake/PrepareBulletTree.cmake
+#         [-DLIBRARY_PATHS_ONLY=ON] -P cmake/PrepareBulletTree.cmake
+#
+# Both path groups of pin.cmake are unpacked (the series patches files of both);
+# LIBRARY_PATHS_ONLY=ON unpacks the libraries only (for an unpatched reference tree).
 #
 # The tree is rebuilt from scratch whenever the stamp (archive checksum or source dir,
 # unpacked paths, series and every patch's content) differs; otherwise nothing is done,
@@ -23,7 +26,7 @@ endif()
 include("${PROJECT_DIR}/bullet-upstream/pin.cmake")
 
 set(paths ${BULLET_UPSTREAM_LIBRARY_PATHS})
-if(WITH_DEMO_PATHS)
+if(NOT LIBRARY_PATHS_ONLY)
 	list(APPEND paths ${BULLET_UPSTREAM_DEMO_PATHS})
 endif()
 
