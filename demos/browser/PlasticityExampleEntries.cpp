@@ -1,0 +1,65 @@
+// The project's example list for the upstream OpenGLExampleBrowser: the plasticity examples only.
+// Implements upstream's ExampleEntriesAll interface (ExampleBrowser/ExampleEntries.h), the way
+// upstream's own ExampleEntries.cpp does for Bullet's examples.
+#include "ExampleEntries.h"
+
+#include "LinearMath/btAlignedObjectArray.h"
+
+#include "CharpyExample.h"
+
+namespace
+{
+struct ExampleEntry
+{
+	int m_menuLevel;
+	const char* m_name;
+	const char* m_description;
+	CommonExampleInterface::CreateFunc* m_createFunc;
+	int m_option;
+};
+
+// Option: the Charpy method number (thesis order).
+const ExampleEntry kPlasticityExamples[] = {
+	{0, "Plasticity", "Plastic deformation and ductile breaking of rigid-body joints.", 0, 0},
+	{1, "Charpy", "Charpy impact test: a 19.5 kg hammer breaks a notched 10 x 10 x 55 mm steel specimen. "
+				  "Choose the joining method and the parameters with the controls; the energy balance is shown on screen.",
+	 CharpyExampleCreateFunc, 6},
+	{1, "Charpy rigid", "Method 1: the specimen is one rigid body.", CharpyExampleCreateFunc, 1},
+	{1, "Charpy brittle", "Method 2: btGeneric6DofConstraint with zero limits and a breaking impulse.", CharpyExampleCreateFunc, 2},
+	{1, "Charpy spring", "Method 3: btGeneric6DofSpringConstraint (elastic only).", CharpyExampleCreateFunc, 3},
+	{1, "Charpy spring2", "Method 4: btGeneric6DofSpring2Constraint (elastic only).", CharpyExampleCreateFunc, 4},
+	{1, "Charpy hinge-motor", "Method 5: btHingeConstraint with a motor capped at the plastic moment.", CharpyExampleCreateFunc, 5},
+	{1, "Charpy plastic-hinge", "Method 6: btPlasticHingeConstraint.", CharpyExampleCreateFunc, 6},
+	{1, "Charpy elastic-plastic", "Method 7: bt6DofElasticPlasticConstraint.", CharpyExampleCreateFunc, 7},
+	{1, "Charpy elastic-plastic2", "Method 8: bt6DofElasticPlastic2Constraint.", CharpyExampleCreateFunc, 8},
+};
+}  // namespace
+
+struct ExampleEntriesInternalData
+{
+	btAlignedObjectArray<ExampleEntry> m_allExamples;
+};
+
+ExampleEntriesAll::ExampleEntriesAll() { m_data = new ExampleEntriesInternalData; }
+
+ExampleEntriesAll::~ExampleEntriesAll() { delete m_data; }
+
+void ExampleEntriesAll::initOpenCLExampleEntries() {}
+
+void ExampleEntriesAll::initExampleEntries()
+{
+	m_data->m_allExamples.clear();
+	for (const ExampleEntry& e : kPlasticityExamples) m_data->m_allExamples.push_back(e);
+}
+
+void ExampleEntriesAll::registerExampleEntry(int, const char*, const char*, CommonExampleInterface::CreateFunc*, int) {}
+
+int ExampleEntriesAll::getNumRegisteredExamples() { return m_data->m_allExamples.size(); }
+
+CommonExampleInterface::CreateFunc* ExampleEntriesAll::getExampleCreateFunc(int index) { return m_data->m_allExamples[index].m_createFunc; }
+
+int ExampleEntriesAll::getExampleOption(int index) { return m_data->m_allExamples[index].m_option; }
+
+const char* ExampleEntriesAll::getExampleName(int index) { return m_data->m_allExamples[index].m_name; }
+
+const char* ExampleEntriesAll::getExampleDescription(int index) { return m_data->m_allExamples[index].m_description; }

@@ -1,0 +1,36 @@
+// How the Charpy scene is shown: camera, body colours, the on-screen energy panel. Shared by the
+// browser example and the figure renderer. Reads the scene; never changes its physics.
+#pragma once
+
+#include <string>
+
+#include "CharpyParameters.h"
+
+class CharpyScene;
+struct GUIHelperInterface;
+struct CommonGraphicsApp;
+
+struct CharpyCamera
+{
+	float distance_m;
+	float yaw_deg;
+	float pitch_deg;
+	float target_m[3];
+};
+
+// Framed on the specimen and the anvils, from above and in front, so the bend is visible.
+CharpyCamera charpyCamera(const CharpyParameters& parameters);
+
+// RGB colours the renderer gives each kind of body (the render test looks for the specimen's).
+extern const float kCharpySpecimenRgb[3];
+extern const float kCharpyAnvilRgb[3];
+extern const float kCharpyHammerRgb[3];
+
+// Graphics objects for every body of the scene's world.
+void createCharpyGraphics(GUIHelperInterface* guiHelper, CharpyScene& scene);
+
+// The energy balance as text lines (J, rad, ms).
+std::string charpyEnergyPanel(const CharpyScene& scene);
+
+// Draws text lines from (left_px, top_px); the default clears the browser's explorer panel.
+void drawCharpyPanel(CommonGraphicsApp* app, const std::string& text, int left_px = 255, int top_px = 45);
