@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/deps.sh
-bash ci/configure.sh -DBP_BUILD_TESTS=OFF
+bash ci/configure.sh -DBP_BUILD_TESTS=OFF -DBP_BUILD_BROWSER=ON
 build="${BUILD_DIR:-build}"
 cmake --build "$build" --target charpy plasticity_browser charpy_figures
 out="$build/charpy-report"

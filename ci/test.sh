@@ -3,7 +3,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/deps.sh
-bash ci/configure.sh -DBP_BUILD_TESTS=ON
+bash ci/configure.sh -DBP_BUILD_TESTS=ON -DBP_BUILD_BROWSER=ON
 cmake --build "${BUILD_DIR:-build}"
 cd "${BUILD_DIR:-build}"
 ctest --output-on-failure -j"$(nproc)"

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "CharpyScene.h"
+#include "CharpyVerdict.h"
 
 CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history)
 {
@@ -49,6 +50,8 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	r.bend_angle_rad = scene.bendAngle_rad();
 	r.max_energy_gain_J = scene.maxEnergyGain_j();
 	r.max_penetration_m = scene.maxPenetration_m();
+	r.max_speed_m_s = scene.maxSpeed_m_s();
+	r.max_distance_m = scene.maxDistance_m();
 	r.broken = scene.broken();
 	r.passed_anvils = scene.passedAnvils();
 	r.tunnelled = r.passed_anvils && parameters.method == CharpyMethod::RigidBody;
@@ -84,7 +87,11 @@ std::string toJson(const CharpyResult& r)
 		<< ",\"bend_angle_rad\":" << number(r.bend_angle_rad) << ",\"impact_speed_m_s\":" << number(r.impact_speed_m_s)
 		<< ",\"broken\":" << flag(r.broken) << ",\"passed_anvils\":" << flag(r.passed_anvils)
 		<< ",\"tunnelled\":" << flag(r.tunnelled) << ",\"finite\":" << flag(r.finite)
-		<< ",\"max_energy_gain_J\":" << number(r.max_energy_gain_J) << ",\"max_penetration_m\":" << number(r.max_penetration_m) << "}";
+		<< ",\"max_energy_gain_J\":" << number(r.max_energy_gain_J) << ",\"max_penetration_m\":" << number(r.max_penetration_m)
+		<< ",\"max_speed_m_s\":" << number(r.max_speed_m_s) << ",\"max_distance_m\":" << number(r.max_distance_m);
+	std::string why;
+	const CharpyVerdict verdict = classifyCharpyRun(r, &why);
+	out << ",\"verdict\":\"" << charpyVerdictName(verdict) << "\",\"verdict_reason\":\"" << why << "\"}";
 	return out.str();
 }
 

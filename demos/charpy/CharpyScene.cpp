@@ -486,6 +486,13 @@ void CharpyScene::trackAfterStep(double h_s)
 	}
 	const double gain = energies().total_j - m_initialEnergy_j;
 	m_maxEnergyGain_j = std::max(m_maxEnergyGain_j, gain);
+	for (int i = 0; i < m_impl->bodies.size(); i++)
+	{
+		const btRigidBody* body = m_impl->bodies[i];
+		if (body->getInvMass() == 0) continue;
+		m_maxSpeed_m_s = std::max(m_maxSpeed_m_s, double(body->getLinearVelocity().length()));
+		m_maxDistance_m = std::max(m_maxDistance_m, double(body->getCenterOfMassPosition().length()));
+	}
 
 	btDispatcher* dispatcher = m_world->getDispatcher();
 	for (int i = 0; i < dispatcher->getNumManifolds(); i++)

@@ -51,6 +51,8 @@ public:
 	bool broken() const;
 	bool passedAnvils() const;       // every part is behind the anvils' front plane (x < 0)
 	double maxPenetration_m() const { return m_maxPenetration_m; }
+	double maxSpeed_m_s() const { return m_maxSpeed_m_s; }        // fastest dynamic body, any step
+	double maxDistance_m() const { return m_maxDistance_m; }      // farthest dynamic body centre from the origin
 	bool finite() const;             // no NaN or infinity in any body state
 
 	btDiscreteDynamicsWorld* world() { return m_world.get(); }
@@ -88,6 +90,8 @@ private:
 	double m_impactSpeed_m_s = 0;
 	double m_maxEnergyGain_j = 0;
 	double m_maxPenetration_m = 0;
+	double m_maxSpeed_m_s = 0;
+	double m_maxDistance_m = 0;
 	// hinge-motor method only: the motor's work and rotation while at its cap
 	double m_motorWork_j = 0;
 	double m_motorRotation_rad = 0;

@@ -1,0 +1,205 @@
+#!/usr/bin/env python3
+"""Report of a Charpy sweep: error against run time.
+
+  ci/charpy_report.py [--csv=report/charpy-sweep.csv] [--out-dir=report] [--command=TEXT]
+
+Writes OUT_DIR/charpy-error-vs-runtime.png (absolute error in % of the analytic loss against wall
+time, log-log, one series per method, the Pareto front marked) and OUT_DIR/REPORT.md (tables per
+method and frame step, the thesis' Table 3.1 beside our elastic-plastic2 results, the machine).
+Both are written whole (tmp file + rename).
+"""
+import argparse
+import os
+import platform
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sweep import csvfile  # noqa: E402
+
+import matplotlib  # noqa: E402
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+METHOD_ORDER = ["rigid", "brittle", "spring", "spring2", "hinge-motor", "plastic-hinge", "elastic-plastic", "elastic-plastic2"]
+# Thesis Table 3.1 (energy loss of elasticPlastic2Constraint, rounded to 10 J): frame step ms -> J
+THESIS_TABLE_3_1 = [(0.1001, 100), (0.1, 110), (0.099, 90), (0.08, 130), (0.05, 150)]
+DEFAULT_ITERATIONS = "10"
+DEFAULT_SUBSTEP = "2e-05"
+
+
+def number(row, column):
+    try:
+        return float(row[column])
+    except (KeyError, TypeError, ValueError):
+        return None
+
+
+def pareto_front(points):
+    """Points (time, error) not beaten by another point that is both faster and more accurate."""
+    front = []
+    best = float("inf")
+    for t, e, label in sorted(points):
+        if e < best:
+            front.append((t, e, label))
+            best = e
+    return front
+
+
+def plot(rows, path):
+    fig, ax = plt.subplots(figsize=(9, 6), dpi=110)
+    points = []
+    markers = "os^vD<>P"
+    for i, method in enumerate(METHOD_ORDER):
+        mine = [r for r in rows if r["method"] == method and number(r, "wall_s") and number(r, "error_pct") is not None]
+        if not mine:
+            continue
+        t = [max(number(r, "wall_s"), 1e-4) for r in mine]
+        e = [max(abs(number(r, "error_pct")), 1e-2) for r in mine]
+        ax.scatter(t, e, s=22, marker=markers[i % len(markers)], label=method, alpha=0.8)
+        points += [(ti, ei, r["key"]) for ti, ei, r in zip(t, e, mine)]
+    front = pareto_front(points)
+    ax.plot([p[0] for p in front], [p[1] for p in front], "k--", lw=1, label="Pareto front (all runs)")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("wall time per run [s] (shared 2-core machine)")
+    ax.set_ylabel("|energy loss - analytic Mp*theta_pass| [% of analytic]")
+    ax.set_title("Charpy impact test: error against run time")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=8, loc="best")
+    fig.tight_layout()
+    tmp = path + ".tmp.png"
+    fig.savefig(tmp)
+    plt.close(fig)
+    os.replace(tmp, path)
+    return front
+
+
+def table(rows, methods, steps, cell):
+    """Markdown table: one row per method, one column per frame step ('auto' last)."""
+    head = "| method | " + " | ".join(f"{s} ms" if s != "auto" else "auto" for s in steps) + " |"
+    lines = [head, "|" + "---|" * (len(steps) + 1)]
+    for m in methods:
+        cells = []
+        for s in steps:
+            found = [r for r in rows if r["method"] == m and (r["dt_ms"] == s if s != "auto" else r["auto_dt"] in ("1", "True"))]
+            cells.append(cell(found[0]) if found else "")
+        lines.append(f"| {m} | " + " | ".join(cells) + " |")
+    return "\n".join(lines)
+
+
+def machine():
+    cpu = ""
+    try:
+        with open("/proc/cpuinfo") as f:
+            cpu = next((l.split(":", 1)[1].strip() for l in f if l.startswith("model name")), "")
+    except OSError:
+        pass
+    compiler = subprocess.run(["c++", "--version"], capture_output=True, text=True).stdout.splitlines()
+    return f"{platform.system()} {platform.release()}, {os.cpu_count()} cores ({cpu}), {compiler[0] if compiler else 'c++ ?'}"
+
+
+def fmt(value, pattern):
+    return "" if value is None else pattern.format(value)
+
+
+def report(rows, out_dir, command):
+    os.makedirs(out_dir, exist_ok=True)
+    png = os.path.join(out_dir, "charpy-error-vs-runtime.png")
+    front = plot(rows, png)
+    base = [r for r in rows if r.get("iterations") == DEFAULT_ITERATIONS and r.get("contact_substep_s") == DEFAULT_SUBSTEP]
+    half = [r for r in rows if r.get("iterations") == DEFAULT_ITERATIONS and r.get("contact_substep_s") == "1e-05"]
+    nosub = [r for r in rows if r.get("iterations") == DEFAULT_ITERATIONS and r.get("contact_substep_s") == "0"]
+    it50 = [r for r in rows if r.get("iterations") == "50" and r.get("contact_substep_s") == DEFAULT_SUBSTEP]
+    steps = sorted({r["dt_ms"] for r in rows if r["dt_ms"]}, key=float) + ["auto"]
+    methods = [m for m in METHOD_ORDER if any(r["method"] == m for r in rows)]
+    analytic = next((number(r, "analytic_J") for r in rows if number(r, "analytic_J")), None)
+    loss = lambda r: fmt(number(r, "energy_loss_J"), "{:.1f}")  # noqa: E731
+    err = lambda r: fmt(number(r, "error_pct"), "{:+.1f}")  # noqa: E731
+    wall = lambda r: fmt(number(r, "wall_s"), "{:.3f}")  # noqa: E731
+    steps_cell = lambda r: r.get("steps", "")  # noqa: E731
+    failures = [r for r in rows if r.get("failure")]
+    ep2 = {r["dt_ms"]: r for r in base if r["method"] == "elastic-plastic2"}
+    thesis = ["| frame step [ms] | thesis EP2 loss [J] | our EP2 loss [J] | our error vs analytic [%] |", "|---|---|---|---|"]
+    for dt, j in THESIS_TABLE_3_1:
+        r = ep2.get(f"{dt:g}")
+        thesis.append(f"| {dt:g} | {j} | {loss(r) if r else 'not run'} | {err(r) if r else ''} |")
+    text = f"""# Charpy impact test: error against run time
+
+Generated by `{command}` from `{os.path.basename(csvfile_path)}` ({len(rows)} runs{', ' + str(len(failures)) + ' failed' if failures else ''}).
+Machine: {machine()}. **Timings are from a shared 2-core machine**: compare them within this report, not across machines.
+
+Error = (energy loss - analytic) / analytic, analytic = Mp * theta_pass = {fmt(analytic, '{:.2f}')} J (friction 0).
+Frame step = `--dt`; contact substep = the internal step while the specimen is in or near contact
+(`--contact-substep`, default 0.02 ms; 0 = off); auto = `--auto-dt` (coarse 5 ms steps away from contact).
+
+![error against run time](charpy-error-vs-runtime.png)
+
+Pareto front (fastest run for each level of error, all configurations):
+
+| run | wall time [s] | abs error [%] |
+|---|---|---|
+""" + "\n".join(f"| `{k}` | {t:.4f} | {e:.2f} |" for t, e, k in front) + f"""
+
+## Energy loss [J], 10 iterations, contact substep 0.02 ms
+
+{table(base, methods, steps, loss)}
+
+## Error [%], 10 iterations, contact substep 0.02 ms
+
+{table(base, methods, steps, err)}
+
+## Error [%], 10 iterations, contact substep 0.01 ms
+
+{table(half, methods, steps, err)}
+
+## Error [%], 10 iterations, no contact substeps
+
+{table(nosub, methods, steps, err)}
+
+## Error [%], 50 iterations, contact substep 0.02 ms
+
+{table(it50, methods, steps, err)}
+
+## Wall time [s], 10 iterations, contact substep 0.02 ms
+
+{table(base, methods, steps, wall)}
+
+## Internal steps, 10 iterations, contact substep 0.02 ms
+
+{table(base, methods, steps, steps_cell)}
+
+## The thesis' Table 3.1 beside ours (elastic-plastic2, 10 iterations, contact substep 0.02 ms)
+
+{chr(10).join(thesis)}
+
+Methods 1-4 have no plastic work: their "error" is how far their energy loss is from a ductile
+specimen's, not a numerical error. Spring methods that gain energy show a negative loss.
+"""
+    path = os.path.join(out_dir, "REPORT.md")
+    with open(path + ".tmp", "w") as f:
+        f.write(text)
+    os.replace(path + ".tmp", path)
+    return path, png
+
+
+def main(argv=None):
+    global csvfile_path
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--csv", default="report/charpy-sweep.csv")
+    parser.add_argument("--out-dir", default="report")
+    parser.add_argument("--command", default="bash ci/report.sh")
+    args = parser.parse_args(argv)
+    csvfile_path = args.csv
+    rows = csvfile.read_rows(args.csv)
+    if not rows:
+        raise SystemExit(f"{args.csv}: no rows (run ci/charpy_sweep.py first)")
+    path, png = report(rows, args.out_dir, args.command)
+    print(f"wrote {path} and {png}")
+    return 0
+
+
+csvfile_path = ""
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,83 @@
+#!/usr/bin/env python3
+"""Error against run time: the Charpy test over methods 1-8 x frame steps x solver iterations x
+contact substeps, each run by the console runner, one CSV row per run.
+
+  ci/charpy_sweep.py [--runner=build/bin/charpy] [--out=report/charpy-sweep.csv] [--jobs=N]
+                     [--shard=i/n] [--quick]
+  ci/charpy_sweep.py --merge SHARD.csv... --out=report/charpy-sweep.csv
+
+Finished rows are kept: run it again after an interruption and it goes on where it stopped.
+With --shard=i/n it runs every n-th configuration (write each shard to its own --out, then merge).
+"""
+import argparse
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sweep import csvfile, runner  # noqa: E402
+
+METHODS = ["rigid", "brittle", "spring", "spring2", "hinge-motor", "plastic-hinge", "elastic-plastic", "elastic-plastic2"]
+# frame steps, ms: the issue's list plus the thesis' Table 3.1 steps (0.1001, 0.099, 0.08 ms)
+DT_MS = [0.01, 0.02, 0.05, 0.08, 0.099, 0.1, 0.1001, 0.2, 0.5, 1, 2, 5, 16.7]
+ITERATIONS = [10, 50]
+# internal step during contact, s: the default, half of it (convergence), and off (every frame
+# step taken as it is)
+CONTACT_SUBSTEP_S = [2e-5, 1e-5, 0]
+FIRST_COLUMNS = ("key", "method", "dt_ms", "auto_dt", "iterations", "contact_substep_s")
+
+
+def configurations(quick=False):
+    """Every configuration of the sweep; quick: a tiny one for tests."""
+    methods = ["plastic-hinge", "elastic-plastic2"] if quick else METHODS
+    steps = [1, 0.1] if quick else DT_MS
+    iterations = [10] if quick else ITERATIONS
+    substeps = [2e-5] if quick else CONTACT_SUBSTEP_S
+    out = []
+    for method in methods:
+        for it in iterations:
+            for sub in substeps:
+                for dt in steps + ["auto"]:
+                    flags = [f"--method={method}", f"--iterations={it}", f"--contact-substep={sub:g}"]
+                    if dt == "auto":
+                        flags.append("--auto-dt")
+                    else:
+                        flags.append(f"--dt={dt / 1000:.10g}")
+                    out.append({
+                        "key": f"{method}/dt={dt}/it={it}/sub={sub:g}",
+                        "method": method,
+                        "dt_ms": "" if dt == "auto" else f"{dt:g}",
+                        "auto_dt": "1" if dt == "auto" else "0",
+                        "iterations": str(it),
+                        "contact_substep_s": f"{sub:g}",
+                        "flags": flags,
+                    })
+    return out
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--runner", default="build/bin/charpy")
+    parser.add_argument("--out", default="report/charpy-sweep.csv")
+    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    parser.add_argument("--shard", default="1/1")
+    parser.add_argument("--quick", action="store_true", help="a tiny sweep (tests)")
+    parser.add_argument("--merge", nargs="+", metavar="CSV", help="merge shard CSV files into --out")
+    args = parser.parse_args(argv)
+    if args.jobs < 1:
+        parser.error(f"--jobs: {args.jobs} is not a whole number >= 1")
+    if args.merge:
+        rows = csvfile.merge(args.merge)
+        csvfile.write_rows(args.out, rows, FIRST_COLUMNS)
+        print(f"{len(rows)} rows from {len(args.merge)} files written to {args.out}")
+        return 0
+    todo = runner.in_shard(configurations(args.quick), runner.parse_shard(args.shard))
+    rows = runner.run_all(args.runner, todo, args.out, args.jobs, first_columns=FIRST_COLUMNS)
+    failed = [r for r in rows if r.get("failure")]
+    for r in failed:
+        print(f"failed: {r['key']}: {r['failure']}", file=sys.stderr)
+    print(f"{len(rows)} rows in {args.out}")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,1 @@
+"""Running the console runner over many configurations: CSV files, shards, resume, progress."""

@@ -1,0 +1,85 @@
+"""Runs configurations through the console runner (build/bin/charpy --json) in parallel.
+
+A configuration is a dict: 'key' (unique name), 'flags' (runner flags) and any other columns,
+which are copied into its CSV row next to the runner's JSON fields.
+"""
+import concurrent.futures
+import json
+import os
+import subprocess
+import sys
+import time
+
+from . import csvfile
+
+
+def parse_shard(text):
+    """'i/n' (1 <= i <= n) -> (i, n)."""
+    try:
+        i, n = (int(x) for x in text.split("/"))
+    except ValueError:
+        raise SystemExit(f"--shard: '{text}' is not i/n with whole numbers 1 <= i <= n")
+    if not 1 <= i <= n:
+        raise SystemExit(f"--shard: '{text}' is not i/n with whole numbers 1 <= i <= n")
+    return i, n
+
+
+def in_shard(configurations, shard):
+    """The configurations of shard (i, n): every n-th one, starting at the i-th."""
+    i, n = shard
+    return [c for index, c in enumerate(configurations) if index % n == i - 1]
+
+
+def run_one(runner, configuration, timeout_s):
+    """One run: the CSV row (configuration columns + JSON fields, or a 'failure' column)."""
+    row = {k: v for k, v in configuration.items() if k not in ("flags", "runner")}
+    row["flags"] = " ".join(configuration["flags"])
+    runner = configuration.get("runner") or runner
+    try:
+        done = subprocess.run([runner, "--json"] + configuration["flags"], capture_output=True, text=True, timeout=timeout_s)
+    except subprocess.TimeoutExpired:
+        row["failure"] = f"timeout after {timeout_s} s"
+        return row
+    if done.returncode != 0:
+        row["failure"] = f"exit {done.returncode}: {done.stderr.strip()[:200]}"
+        return row
+    try:
+        result = json.loads(done.stdout.strip().splitlines()[-1])
+    except (ValueError, IndexError):
+        row["failure"] = "no JSON on stdout"
+        return row
+    row.update({k: (int(v) if isinstance(v, bool) else v) for k, v in result.items()})
+    return row
+
+
+def run_all(runner, configurations, out_csv, jobs, timeout_s=600, first_columns=("key",), log=sys.stderr):
+    """Runs every configuration not yet in out_csv, keeping the finished rows; returns all rows.
+
+    out_csv is rewritten whole after each finished run, so an interrupted sweep loses nothing
+    and the next call resumes where it stopped.
+    """
+    if not os.access(runner, os.X_OK):
+        raise SystemExit(f"runner {runner} not found or not executable (build it: cmake --build build --target charpy)")
+    keys = [c["key"] for c in configurations]
+    if len(set(keys)) != len(keys):
+        raise SystemExit("configurations have duplicate keys")
+    wanted = set(keys)
+    rows = [r for r in csvfile.read_rows(out_csv) if r.get("key") in wanted and not r.get("failure")]
+    finished = {r["key"] for r in rows}
+    todo = [c for c in configurations if c["key"] not in finished]
+    total = len(configurations)
+    print(f"{len(finished)}/{total} already in {out_csv}, {len(todo)} to run on {jobs} jobs", file=log)
+    start = time.monotonic()
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
+        futures = [pool.submit(run_one, runner, c, timeout_s) for c in todo]
+        for n, future in enumerate(concurrent.futures.as_completed(futures), 1):
+            rows.append(future.result())
+            order = {k: i for i, k in enumerate(keys)}
+            rows.sort(key=lambda r: order[r["key"]])
+            csvfile.write_rows(out_csv, rows, first_columns)
+            elapsed = time.monotonic() - start
+            eta = elapsed / n * (len(todo) - n)
+            print(f"\r{len(finished) + n}/{total} done, {elapsed:.0f} s, ETA {eta:.0f} s   ", end="", file=log, flush=True)
+    if todo:
+        print(file=log)
+    return rows

@@ -1,0 +1,81 @@
+#include "CharpyVerdict.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace
+{
+const double kMaxDistance_m = 20.0;
+const double kMinSpeedLimit_m_s = 100.0;
+const double kSpeedLimitPerImpactSpeed = 20.0;
+const double kEnergyGainFraction = 0.01;
+const double kTunnellingLossFraction = 0.05;
+
+std::string format(const char* pattern, double a, double b)
+{
+	char text[160];
+	std::snprintf(text, sizeof(text), pattern, a, b);
+	return text;
+}
+}  // namespace
+
+std::string_view charpyVerdictName(CharpyVerdict verdict)
+{
+	switch (verdict)
+	{
+		case CharpyVerdict::NotFinite:
+			return "nan";
+		case CharpyVerdict::BlowUp:
+			return "blow-up";
+		case CharpyVerdict::EnergyGain:
+			return "energy-gain";
+		case CharpyVerdict::Tunnelling:
+			return "tunnelling";
+		case CharpyVerdict::Stable:
+			return "stable";
+	}
+	return "?";
+}
+
+CharpyVerdict classifyCharpyRun(const CharpyResult& r, std::string* why)
+{
+	std::string reason;
+	CharpyVerdict verdict = CharpyVerdict::Stable;
+	const double speedLimit_m_s = std::max(kMinSpeedLimit_m_s, kSpeedLimitPerImpactSpeed * r.impact_speed_m_s);
+	if (!r.finite)
+	{
+		verdict = CharpyVerdict::NotFinite;
+		reason = "a body state is NaN or infinite";
+	}
+	else if (r.max_speed_m_s > speedLimit_m_s)
+	{
+		verdict = CharpyVerdict::BlowUp;
+		reason = format("max speed %.3g m/s > %.3g m/s", r.max_speed_m_s, speedLimit_m_s);
+	}
+	else if (r.max_distance_m > kMaxDistance_m)
+	{
+		verdict = CharpyVerdict::BlowUp;
+		reason = format("max distance %.3g m > %.3g m", r.max_distance_m, kMaxDistance_m);
+	}
+	else if (r.max_energy_gain_J > kEnergyGainFraction * r.E0_J)
+	{
+		verdict = CharpyVerdict::EnergyGain;
+		reason = format("energy rose %.3g J above E0 = %.4g J", r.max_energy_gain_J, r.E0_J);
+	}
+	else if (r.tunnelled)
+	{
+		verdict = CharpyVerdict::Tunnelling;
+		reason = format("a rigid specimen passed the anvils (max penetration %.3g mm, loss %.4g J)", r.max_penetration_m * 1e3, r.energy_loss_J);
+	}
+	else if (r.impact_speed_m_s > 0 && r.energy_loss_J < kTunnellingLossFraction * r.analytic_J)
+	{
+		verdict = CharpyVerdict::Tunnelling;
+		reason = format("the hammer lost %.3g J < 5 %% of Mp*theta_pass = %.4g J: it passed the specimen without the work", r.energy_loss_J, r.analytic_J);
+	}
+	else
+	{
+		reason = format("energy loss %.4g J, max energy gain %.3g J", r.energy_loss_J, r.max_energy_gain_J);
+	}
+	if (why) *why = reason;
+	return verdict;
+}

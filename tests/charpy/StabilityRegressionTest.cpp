@@ -1,0 +1,71 @@
+// A fast subset of the stability matrix (ci/stability.py, report/STABILITY.md) as regression tests:
+// the new constraints stay finite and never gain energy in stiff and extreme cells, and the
+// upstream failures the thesis describes are still reproduced and classified.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "CharpyRun.h"
+#include "CharpyVerdict.h"
+
+namespace
+{
+struct Cell
+{
+	const char* name;
+	CharpyMethod method;
+	void (*apply)(CharpyParameters&);
+	CharpyVerdict expected;
+	// plastic work at most the energy lost: holds for the plastic hinge (it books Mp times the rotation
+	// it made at its cap). The elastic-plastic classes book yield from the DOF's position alone and
+	// over-book when the solver lets a DOF drift (CHANGES.md, known open points), so they are not held to it.
+	bool workBalance = false;
+};
+
+CharpyResult run(const Cell& cell, CharpyParameters& p)
+{
+	p.method = cell.method;
+	cell.apply(p);
+	return runCharpy(p);
+}
+
+const Cell kCells[] = {
+	{"fy800_plastic_hinge", CharpyMethod::PlasticHinge, [](CharpyParameters& p) { p.yield_stress_pa = 800e6; }, CharpyVerdict::Stable, true},
+	{"fy800_elastic_plastic", CharpyMethod::ElasticPlastic, [](CharpyParameters& p) { p.yield_stress_pa = 800e6; }, CharpyVerdict::Stable},
+	{"fy800_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.yield_stress_pa = 800e6; }, CharpyVerdict::Stable},
+	{"fy2000_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.yield_stress_pa = 2000e6; }, CharpyVerdict::Stable},
+	{"dt60Hz_plastic_hinge", CharpyMethod::PlasticHinge, [](CharpyParameters& p) { p.dt_s = 1.0 / 60; }, CharpyVerdict::Stable, true},
+	{"dt60Hz_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.dt_s = 1.0 / 60; }, CharpyVerdict::Stable},
+	{"parts4_plastic_hinge", CharpyMethod::PlasticHinge, [](CharpyParameters& p) { p.parts = 4; }, CharpyVerdict::Stable, true},
+	{"parts8_elastic_plastic", CharpyMethod::ElasticPlastic, [](CharpyParameters& p) { p.parts = 8; }, CharpyVerdict::Stable},
+	{"iterations1_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.solver_iterations = 1; }, CharpyVerdict::Stable},
+	{"stiffE_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.youngs_modulus_pa = 2000e9; }, CharpyVerdict::Stable},
+	// upstream, as it is: the spring explodes (thesis fig. 3.5), a rigid specimen tunnels at 1/60 s
+	{"fy800_spring_upstream", CharpyMethod::Spring, [](CharpyParameters& p) { p.yield_stress_pa = 800e6; }, CharpyVerdict::BlowUp},
+	{"default_spring2_upstream", CharpyMethod::Spring2, [](CharpyParameters&) {}, CharpyVerdict::EnergyGain},
+	{"dt60Hz_nosub_rigid_upstream", CharpyMethod::RigidBody, [](CharpyParameters& p) { p.dt_s = 1.0 / 60; p.contact_substep_s = 0; }, CharpyVerdict::Tunnelling},
+};
+
+class StabilityCell : public ::testing::TestWithParam<Cell>
+{
+};
+}  // namespace
+
+TEST_P(StabilityCell, HasTheExpectedVerdict)
+{
+	CharpyParameters p;
+	const CharpyResult r = run(GetParam(), p);
+	std::string why;
+	const CharpyVerdict verdict = classifyCharpyRun(r, &why);
+	EXPECT_EQ(charpyVerdictName(verdict), charpyVerdictName(GetParam().expected)) << why;
+	if (GetParam().expected == CharpyVerdict::Stable)
+	{
+		EXPECT_TRUE(r.finite);
+		EXPECT_LE(r.max_energy_gain_J, 0.01 * r.E0_J) << "energy gain";
+		EXPECT_GT(r.plastic_work_J, 0.05 * r.analytic_J) << "no plastic work: the hammer went through";
+		if (GetParam().workBalance) EXPECT_LE(r.plastic_work_J, r.energy_loss_J * 1.02) << "more plastic work than energy lost";
+	}
+}
+
+INSTANTIATE_TEST_SUITE_P(Matrix, StabilityCell, ::testing::ValuesIn(kCells),
+						 [](const ::testing::TestParamInfo<Cell>& info) { return std::string(info.param.name); });
