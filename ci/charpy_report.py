@@ -25,8 +25,10 @@ import matplotlib.pyplot as plt  # noqa: E402
 METHOD_ORDER = ["rigid", "brittle", "spring", "spring2", "hinge-motor", "plastic-hinge", "elastic-plastic", "elastic-plastic2"]
 # Thesis Table 3.1 (energy loss of elasticPlastic2Constraint, rounded to 10 J): frame step ms -> J
 THESIS_TABLE_3_1 = [(0.1001, 100), (0.1, 110), (0.099, 90), (0.08, 130), (0.05, 150)]
+# methods that model the plastic hinge; for 1-4 the "error" only says how far from a ductile specimen they are
+PLASTIC_METHODS = {"hinge-motor", "plastic-hinge", "elastic-plastic", "elastic-plastic2"}
 DEFAULT_ITERATIONS = "10"
-DEFAULT_SUBSTEP = "2e-05"
+DEFAULT_SUBSTEP = "1e-05"
 
 
 def number(row, column):
@@ -58,9 +60,10 @@ def plot(rows, path):
         t = [max(number(r, "wall_s"), 1e-4) for r in mine]
         e = [max(abs(number(r, "error_pct")), 1e-2) for r in mine]
         ax.scatter(t, e, s=22, marker=markers[i % len(markers)], label=method, alpha=0.8)
-        points += [(ti, ei, r["key"]) for ti, ei, r in zip(t, e, mine)]
+        if method in PLASTIC_METHODS:
+            points += [(ti, ei, r["key"]) for ti, ei, r in zip(t, e, mine)]
     front = pareto_front(points)
-    ax.plot([p[0] for p in front], [p[1] for p in front], "k--", lw=1, label="Pareto front (all runs)")
+    ax.plot([p[0] for p in front], [p[1] for p in front], "k--", lw=1, label="Pareto front (methods 5-8)")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("wall time per run [s] (shared 2-core machine)")
@@ -89,6 +92,20 @@ def table(rows, methods, steps, cell):
     return "\n".join(lines)
 
 
+def convergence(rows):
+    lines = ["| method | substep 0.02 ms: loss [J] | 0.01 ms (default) | no substep, frame step 0.01 ms | plastic work at 0.01 ms [J] |",
+             "|---|---|---|---|---|"]
+    for m in METHOD_ORDER:
+        if m not in PLASTIC_METHODS:
+            continue
+        pick = lambda dt, sub: next((r for r in rows if r["method"] == m and r.get("dt_ms") == dt and r.get("iterations") == "10"  # noqa: E731
+                                     and r.get("contact_substep_s") == sub), None)
+        a, b, c = pick("0.1", "2e-05"), pick("0.1", "1e-05"), pick("0.01", "0")
+        f = lambda r, col="energy_loss_J": fmt(number(r, col), "{:.1f}") if r else ""  # noqa: E731
+        lines.append(f"| {m} | {f(a)} | {f(b)} | {f(c)} | {f(b, 'plastic_work_J')} |")
+    return "\n".join(lines)
+
+
 def machine():
     cpu = ""
     try:
@@ -109,7 +126,7 @@ def report(rows, out_dir, command):
     png = os.path.join(out_dir, "charpy-error-vs-runtime.png")
     front = plot(rows, png)
     base = [r for r in rows if r.get("iterations") == DEFAULT_ITERATIONS and r.get("contact_substep_s") == DEFAULT_SUBSTEP]
-    half = [r for r in rows if r.get("iterations") == DEFAULT_ITERATIONS and r.get("contact_substep_s") == "1e-05"]
+    double = [r for r in rows if r.get("iterations") == DEFAULT_ITERATIONS and r.get("contact_substep_s") == "2e-05"]
     nosub = [r for r in rows if r.get("iterations") == DEFAULT_ITERATIONS and r.get("contact_substep_s") == "0"]
     it50 = [r for r in rows if r.get("iterations") == "50" and r.get("contact_substep_s") == DEFAULT_SUBSTEP]
     steps = sorted({r["dt_ms"] for r in rows if r["dt_ms"]}, key=float) + ["auto"]
@@ -132,45 +149,55 @@ Machine: {machine()}. **Timings are from a shared 2-core machine**: compare them
 
 Error = (energy loss - analytic) / analytic, analytic = Mp * theta_pass = {fmt(analytic, '{:.2f}')} J (friction 0).
 Frame step = `--dt`; contact substep = the internal step while the specimen is in or near contact
-(`--contact-substep`, default 0.02 ms; 0 = off); auto = `--auto-dt` (coarse 5 ms steps away from contact).
+(`--contact-substep`, default 0.01 ms; 0 = off); auto = `--auto-dt` (coarse 5 ms steps away from contact).
 
 ![error against run time](charpy-error-vs-runtime.png)
 
-Pareto front (fastest run for each level of error, all configurations):
+Pareto front (fastest run for each level of error, methods 5-8):
 
 | run | wall time [s] | abs error [%] |
 |---|---|---|
 """ + "\n".join(f"| `{k}` | {t:.4f} | {e:.2f} |" for t, e, k in front) + f"""
 
-## Energy loss [J], 10 iterations, contact substep 0.02 ms
+## Convergence of the contact substep (10 iterations, frame step 0.1 ms)
+
+{convergence(rows)}
+
+A contact substep of 0.02 ms lands on the analytic value for methods 5 and 6 at some frame steps, but
+the loss has not converged there: with frame steps that are not a multiple of it (0.05, 0.099 ms) the
+internal step shrinks and the loss moves to 134-136 J. At 0.01 ms (the default) it has converged:
+the same loss, within 0.3 %, as 0.01 ms frames without substeps. The remaining +2.4 to +4.3 % over
+Mp*theta_pass is contact loss (friction 0) and the rigid-plastic hinge idealisation.
+
+## Energy loss [J], 10 iterations, contact substep 0.01 ms (default)
 
 {table(base, methods, steps, loss)}
 
-## Error [%], 10 iterations, contact substep 0.02 ms
+## Error [%], 10 iterations, contact substep 0.01 ms (default)
 
 {table(base, methods, steps, err)}
 
-## Error [%], 10 iterations, contact substep 0.01 ms
+## Error [%], 10 iterations, contact substep 0.02 ms (the earlier default)
 
-{table(half, methods, steps, err)}
+{table(double, methods, steps, err)}
 
 ## Error [%], 10 iterations, no contact substeps
 
 {table(nosub, methods, steps, err)}
 
-## Error [%], 50 iterations, contact substep 0.02 ms
+## Error [%], 50 iterations, contact substep 0.01 ms
 
 {table(it50, methods, steps, err)}
 
-## Wall time [s], 10 iterations, contact substep 0.02 ms
+## Wall time [s], 10 iterations, contact substep 0.01 ms
 
 {table(base, methods, steps, wall)}
 
-## Internal steps, 10 iterations, contact substep 0.02 ms
+## Internal steps, 10 iterations, contact substep 0.01 ms
 
 {table(base, methods, steps, steps_cell)}
 
-## The thesis' Table 3.1 beside ours (elastic-plastic2, 10 iterations, contact substep 0.02 ms)
+## The thesis' Table 3.1 beside ours (elastic-plastic2, 10 iterations, contact substep 0.01 ms)
 
 {chr(10).join(thesis)}
 

@@ -48,7 +48,7 @@ const std::map<std::string, std::pair<Setter, const char*>>& valueFlags()
 					"NAME  joining method (see --list-methods), default plastic-hinge"}},
 		{"dt", {number(&CharpyParameters::dt_s), "SECONDS  frame step, default 1e-4"}},
 		{"auto-dt-coarse", {number(&CharpyParameters::auto_dt_coarse_s), "SECONDS  step far from contact with --auto-dt, default 5e-3"}},
-		{"contact-substep", {number(&CharpyParameters::contact_substep_s), "SECONDS  internal step in/near contact, 0 = off, default 2e-5"}},
+		{"contact-substep", {number(&CharpyParameters::contact_substep_s), "SECONDS  internal step in/near contact, 0 = off, default 1e-5"}},
 		{"iterations", {[](CharpyParameters& p, const std::string& t) { return parseInteger(t, p.solver_iterations); }, "N  solver iterations, default 10"}},
 		{"duration", {number(&CharpyParameters::duration_s), "SECONDS  simulated time, default 0.06"}},
 		{"fy", {number(&CharpyParameters::yield_stress_pa), "PA  yield stress, default 400e6"}},

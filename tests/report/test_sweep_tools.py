@@ -93,7 +93,7 @@ class ReportTest(unittest.TestCase):
             self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n")
         self.assertGreater(os.path.getsize(png), 10000)
         text = open(md).read()
-        self.assertIn("## Energy loss [J], 10 iterations, contact substep 0.02 ms", text)
+        self.assertIn("## Energy loss [J], 10 iterations, contact substep 0.01 ms (default)", text)
         self.assertIn("| plastic-hinge | ", text)
         self.assertIn("| 0.1001 | 100 |", text)  # thesis Table 3.1, first row
         self.assertIn("shared 2-core machine", text)

@@ -1,0 +1,44 @@
+// Benchmark scenes: N boxes, each held to one static anchor by one joint of a given kind, under
+// gravity, with collisions off (so the joints are what is measured). Loaded joints carry the
+// box's weight moment; an idle plastic joint has a cap far above it, a yielding one below it.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "btBulletDynamicsCommon.h"
+
+enum class JointKind
+{
+	HingeLocked,          // upstream btHingeConstraint, limit low == high (rigid)
+	HingeMotor,           // upstream btHingeConstraint, motor target 0 with a max impulse (thesis method 5)
+	FixedBreakable,       // upstream btGeneric6DofConstraint, zero limits + breaking impulse (thesis method 2)
+	PlasticHingeIdle,     // btPlasticHingeConstraint, cap far above the load
+	PlasticHingeYielding, // btPlasticHingeConstraint, cap below the load: yields every step
+	Spring,               // upstream btGeneric6DofSpringConstraint
+	ElasticPlastic,       // bt6DofElasticPlasticConstraint
+	Spring2,              // upstream btGeneric6DofSpring2Constraint
+	ElasticPlastic2,      // bt6DofElasticPlastic2Constraint
+};
+
+class JointScene
+{
+public:
+	JointScene(JointKind kind, int joints);
+	~JointScene();
+	void step() { m_world->stepSimulation(kStep_s, 0, kStep_s); }
+	static constexpr btScalar kStep_s = btScalar(1.0 / 60);
+	// sizeof the constraint class of a kind, bytes
+	static size_t constraintSize(JointKind kind);
+
+private:
+	btDefaultCollisionConfiguration m_configuration;
+	btCollisionDispatcher m_dispatcher{&m_configuration};
+	btDbvtBroadphase m_broadphase;
+	btSequentialImpulseConstraintSolver m_solver;
+	std::unique_ptr<btDiscreteDynamicsWorld> m_world;
+	btBoxShape m_shape{btVector3(0.05, 0.05, 0.2)};
+	std::unique_ptr<btRigidBody> m_anchor;
+	std::vector<std::unique_ptr<btRigidBody>> m_bodies;
+	std::vector<std::unique_ptr<btTypedConstraint>> m_joints;
+};
