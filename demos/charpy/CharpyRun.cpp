@@ -52,6 +52,7 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	r.max_penetration_m = scene.maxPenetration_m();
 	r.max_speed_m_s = scene.maxSpeed_m_s();
 	r.max_distance_m = scene.maxDistance_m();
+	r.hammer_angle_end_rad = scene.hammerAngle_rad();
 	r.broken = scene.broken();
 	r.passed_anvils = scene.passedAnvils();
 	r.tunnelled = r.passed_anvils && parameters.method == CharpyMethod::RigidBody;
@@ -88,7 +89,8 @@ std::string toJson(const CharpyResult& r)
 		<< ",\"broken\":" << flag(r.broken) << ",\"passed_anvils\":" << flag(r.passed_anvils)
 		<< ",\"tunnelled\":" << flag(r.tunnelled) << ",\"finite\":" << flag(r.finite)
 		<< ",\"max_energy_gain_J\":" << number(r.max_energy_gain_J) << ",\"max_penetration_m\":" << number(r.max_penetration_m)
-		<< ",\"max_speed_m_s\":" << number(r.max_speed_m_s) << ",\"max_distance_m\":" << number(r.max_distance_m);
+		<< ",\"max_speed_m_s\":" << number(r.max_speed_m_s) << ",\"max_distance_m\":" << number(r.max_distance_m)
+		<< ",\"hammer_angle_end_rad\":" << number(r.hammer_angle_end_rad);
 	std::string why;
 	const CharpyVerdict verdict = classifyCharpyRun(r, &why);
 	out << ",\"verdict\":\"" << charpyVerdictName(verdict) << "\",\"verdict_reason\":\"" << why << "\"}";

@@ -10,6 +10,7 @@ const double kMinSpeedLimit_m_s = 100.0;
 const double kSpeedLimitPerImpactSpeed = 20.0;
 const double kEnergyGainFraction = 0.01;
 const double kTunnellingLossFraction = 0.05;
+const double kHammerThroughAngle_rad = 0.05;  // about 30 mm of striker travel past the specimen's front face
 
 std::string format(const char* pattern, double a, double b)
 {
@@ -67,10 +68,11 @@ CharpyVerdict classifyCharpyRun(const CharpyResult& r, std::string* why)
 		verdict = CharpyVerdict::Tunnelling;
 		reason = format("a rigid specimen passed the anvils (max penetration %.3g mm, loss %.4g J)", r.max_penetration_m * 1e3, r.energy_loss_J);
 	}
-	else if (r.impact_speed_m_s > 0 && r.energy_loss_J < kTunnellingLossFraction * r.analytic_J)
+	else if (r.impact_speed_m_s > 0 && r.hammer_angle_end_rad < -kHammerThroughAngle_rad &&
+			 r.energy_loss_J < kTunnellingLossFraction * r.analytic_J)
 	{
 		verdict = CharpyVerdict::Tunnelling;
-		reason = format("the hammer lost %.3g J < 5 %% of Mp*theta_pass = %.4g J: it passed the specimen without the work", r.energy_loss_J, r.analytic_J);
+		reason = format("the hammer swung through losing %.3g J < 5 %% of Mp*theta_pass = %.4g J", r.energy_loss_J, r.analytic_J);
 	}
 	else
 	{

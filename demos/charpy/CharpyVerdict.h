@@ -13,8 +13,8 @@ enum class CharpyVerdict
 	BlowUp,      // a body faster than max(100 m/s, 20 x impact speed) or farther than 20 m from the origin
 	EnergyGain,  // total energy rose more than 1 % of E0 above E0
 	Tunnelling,  // a rigid specimen got past the anvils (it cannot without penetrating them), or the
-	             // hammer lost less than 5 % of Mp * theta_pass: it went through the specimen or the
-	             // specimen through the anvils without the work
+	             // hammer swung on past the specimen (more than 0.05 rad) losing less than 5 % of
+	             // Mp * theta_pass: through the specimen, or the specimen through the anvils, without the work
 	Stable,
 };
 
