@@ -115,6 +115,17 @@ def write_markdown(rows, case_names, path, command):
                       "their yield is detected from the DOF's position, not from the force the solver applied."]
     else:
         lines.append("None.")
+    lines += ["", "## Energy bookkeeping of the new constraints", "",
+              "Cells (methods 6-8) where the plastic work they report disagrees with the energy balance: more",
+              "than 105 % of the energy lost, or none although the specimen passed the anvils.", ""]
+    book = []
+    for r in rows:
+        if r["method"] not in NEW_METHODS or r.get("failure"):
+            continue
+        work, loss = float(r["plastic_work_J"]), float(r["energy_loss_J"])
+        if work > 1.05 * max(loss, 0) + 1e-6 or (work == 0 and r.get("passed_anvils") in ("1", "True")):
+            book.append(f"- `{r['key']}`: plastic work {work:.1f} J, energy loss {loss:.1f} J")
+    lines += book or ["None."]
     upstream = [r for r in rows if r["method"] not in NEW_METHODS and r.get("verdict") not in ("stable", None)]
     lines += ["", "## Upstream methods (1-5) that are not stable, as they are", ""]
     lines += [f"- `{r['key']}`: {r['verdict']}: {r.get('verdict_reason', '')}" for r in upstream] or ["None."]
