@@ -46,12 +46,21 @@ std::vector<std::string> validateCharpyParameters(const CharpyParameters& p)
 	requireRange(errors, "initial-energy", p.initial_energy_j, 0, 1e6, true, "J (0 = use release-angle)");
 	requireRange(errors, "dt", p.dt_s, 1e-7, 0.05, true, "s");
 	requireRange(errors, "auto-dt-coarse", p.auto_dt_coarse_s, 1e-6, 0.05, true, "s");
-	requireRange(errors, "contact-substep", p.contact_substep_s, 0, 0.05, true, "s (0 = off)");
+	if (p.contact_substep_s != 0)
+	{
+		requireRange(errors, "contact-substep", p.contact_substep_s, 1e-7, 0.05, true, "s (or 0 = off)");
+	}
 	if (p.solver_iterations < 1 || p.solver_iterations > 10000)
 	{
 		errors.push_back("iterations: " + std::to_string(p.solver_iterations) + " is not in [1, 10000]");
 	}
 	requireRange(errors, "duration", p.duration_s, 0, 100, false, "s");
+	if (std::isfinite(p.duration_s) && std::isfinite(p.dt_s) && p.dt_s > 0 && p.duration_s / p.dt_s > 1e7)
+	{
+		std::ostringstream out;
+		out << "duration / dt: " << p.duration_s << " s / " << p.dt_s << " s is more than 1e7 frames";
+		errors.push_back(out.str());
+	}
 	requireRange(errors, "brittle-force", p.brittle_breaking_force_n, 0, 1e12, false, "N");
 	requireRange(errors, "frequency-ratio", p.frequency_ratio, 1, 1e6, true, "steps per period");
 	return errors;

@@ -115,16 +115,26 @@ CharpyScene::CharpyScene(const CharpyParameters& parameters)
 	m_section = computeCharpySection(parameters);
 	m_fullSectionMoment_nm = sectionDofs(parameters, parameters.specimen_width_m, 1.0).maxForce[3];
 	m_impl = std::make_unique<Impl>();
-	createWorld();
-	createAnvils();
-	createSpecimen();
-	createJoints();
-	createHammer();
+	try
+	{
+		createWorld();
+		createAnvils();
+		createSpecimen();
+		createJoints();
+		createHammer();  // throws when the hammer cannot reach the specimen
+	}
+	catch (...)
+	{
+		destroy();  // the destructor does not run for a constructor that throws
+		throw;
+	}
 	m_initialEnergy_j = energies().total_j;
 	m_previousBend_rad = bendAngle_rad();
 }
 
-CharpyScene::~CharpyScene()
+CharpyScene::~CharpyScene() { destroy(); }
+
+void CharpyScene::destroy()
 {
 	for (int i = m_impl->constraints.size() - 1; i >= 0; i--)
 	{
@@ -138,6 +148,10 @@ CharpyScene::~CharpyScene()
 	}
 	for (int i = 0; i < m_impl->motionStates.size(); i++) delete m_impl->motionStates[i];
 	for (int i = 0; i < m_impl->shapes.size(); i++) delete m_impl->shapes[i];
+	m_impl->constraints.clear();
+	m_impl->bodies.clear();
+	m_impl->motionStates.clear();
+	m_impl->shapes.clear();
 	m_world.reset();
 }
 

@@ -62,6 +62,7 @@ public:
 private:
 	struct Impl;
 
+	void destroy();  // removes and deletes everything created so far
 	void createWorld();
 	void createAnvils();
 	void createSpecimen();

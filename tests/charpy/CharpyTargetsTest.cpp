@@ -29,30 +29,43 @@ TEST(CharpySection, DefaultSectionAndPassAngle)
 	EXPECT_NEAR(computeCharpySection(centre).theta_pass_rad, 1.907, 0.002);
 }
 
-TEST(CharpyTargets, PlasticMethodsWithinTenPercentAtPointOneMillisecond)
+TEST(CharpyTargets, PlasticMethodsWithinFivePercentAtEveryFrameStep)
 {
 	for (CharpyMethod m : {CharpyMethod::HingeMotor, CharpyMethod::PlasticHinge, CharpyMethod::ElasticPlastic, CharpyMethod::ElasticPlastic2})
 	{
-		CharpyResult r = run(m, 1e-4);
-		EXPECT_TRUE(r.finite) << r.method;
-		EXPECT_TRUE(r.passed_anvils) << r.method;
-		EXPECT_LT(std::fabs(r.error_pct), 10.0) << r.method << " loss " << r.energy_loss_J << " J vs " << r.analytic_J;
-		EXPECT_LE(r.max_energy_gain_J, 0.01 * r.E0_J) << r.method;
+		for (double dt : {1e-5, 5e-5, 1e-4, 1e-3})
+		{
+			CharpyResult r = run(m, dt);
+			EXPECT_TRUE(r.finite) << r.method;
+			EXPECT_TRUE(r.passed_anvils) << r.method << " dt " << dt;
+			EXPECT_LT(std::fabs(r.error_pct), 5.0) << r.method << " dt " << dt << ": loss " << r.energy_loss_J << " J vs " << r.analytic_J;
+			EXPECT_LE(r.max_energy_gain_J, 0.01 * r.E0_J) << r.method;
+		}
 	}
 }
 
-TEST(CharpyTargets, PlasticHingeWithinTenPercentWithAutomaticStepping)
+TEST(CharpyTargets, LossConvergesAsTheFrameStepShrinks)
+{
+	for (CharpyMethod m : {CharpyMethod::PlasticHinge, CharpyMethod::ElasticPlastic2})
+	{
+		const CharpyResult coarse = run(m, 2e-5);
+		const CharpyResult fine = run(m, 1e-5);
+		EXPECT_NEAR(coarse.energy_loss_J, fine.energy_loss_J, 0.01 * fine.energy_loss_J) << coarse.method;
+	}
+}
+
+TEST(CharpyTargets, PlasticHingeWithinFivePercentWithAutomaticStepping)
 {
 	CharpyResult r = run(CharpyMethod::PlasticHinge, 1e-4, true);
-	EXPECT_LT(std::fabs(r.error_pct), 10.0) << r.energy_loss_J;
+	EXPECT_LT(std::fabs(r.error_pct), 5.0) << r.energy_loss_J;
 	EXPECT_TRUE(r.passed_anvils);
 }
 
 TEST(CharpyTargets, PlasticHingeLossIsMostlyPlasticWork)
 {
 	CharpyResult r = run(CharpyMethod::PlasticHinge, 1e-4);
-	// The target is 97 %; the rest of the loss is the inelastic impact on the 20 g halves and contact work.
-	EXPECT_GT(r.plastic_work_J, 0.9 * r.energy_loss_J);
+	// The rest of the loss is the inelastic impact on the 20 g halves and contact work.
+	EXPECT_GE(r.plastic_work_J, 0.97 * r.energy_loss_J);
 	EXPECT_GT(r.plastic_rotation_rad, 0.9 * r.theta_pass_rad);
 }
 
@@ -63,9 +76,7 @@ TEST(CharpyTargets, HalvingYieldStressHalvesPlasticWork)
 	CharpyResult full = runCharpy(p);
 	p.yield_stress_pa /= 2;
 	CharpyResult half = runCharpy(p);
-	// The target is 5 %; measured 6.3 % (64.5 J vs 60.7 J): at 400 MPa the halves slip past the anvils
-	// at 1.90 rad of plastic rotation, at 200 MPa at 2.0 rad. Bound at 10 % until that is understood.
-	EXPECT_NEAR(half.plastic_work_J, full.plastic_work_J / 2, 0.10 * full.plastic_work_J / 2);
+	EXPECT_NEAR(half.plastic_work_J, full.plastic_work_J / 2, 0.05 * full.plastic_work_J / 2);
 }
 
 TEST(CharpyTargets, RigidSpecimenAtSeventeenMillisecondsIsReportedNotPassed)
