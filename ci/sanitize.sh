@@ -4,13 +4,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/deps.sh
-# reuse the sdist build/ already downloaded, if any
-archive="$PWD/${BUILD_DIR:-build}/_downloads/pybullet-3.2.7.tar.gz"
-[[ -f $archive ]] || archive=
 flags="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined -O1 -g"
 BUILD_DIR=build-asan bash ci/configure.sh -DBP_BUILD_TESTS=ON -DBP_BUILD_BROWSER=OFF -DCMAKE_BUILD_TYPE=Debug \
-	-DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
-	${archive:+-DBULLET_ARCHIVE="$archive"}
+	-DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined"
 cmake --build build-asan
 cd build-asan
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \

@@ -5,14 +5,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/deps.sh
-# reuse the sdist build/ already downloaded, if any
-archive="$PWD/${BUILD_DIR:-build}/_downloads/pybullet-3.2.7.tar.gz"
-[[ -f $archive ]] || archive=
 build="${BUILD_DIR:-build}"
 bash ci/configure.sh -DBP_BUILD_TESTS=OFF
 cmake --build "$build" --target charpy
-BUILD_DIR=build-double bash ci/configure.sh -DBP_BUILD_TESTS=OFF -DBP_BUILD_BROWSER=OFF -DBP_USE_DOUBLE_PRECISION=ON \
-	${archive:+-DBULLET_ARCHIVE="$archive"}
+BUILD_DIR=build-double bash ci/configure.sh -DBP_BUILD_TESTS=OFF -DBP_BUILD_BROWSER=OFF -DBP_USE_DOUBLE_PRECISION=ON
 cmake --build build-double --target charpy
 python3 ci/stability.py --runner="$build/bin/charpy" --runner-double=build-double/bin/charpy --out-dir=report \
 	--command="bash ci/stability.sh $*" "$@"

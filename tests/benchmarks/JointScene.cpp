@@ -12,6 +12,34 @@ const btScalar kYieldCap_nm = btScalar(0.5) * kLoadMoment_nm;
 
 btTransform at(const btVector3& origin) { return btTransform(btQuaternion::getIdentity(), origin); }
 
+// Spring and Spring2 (and their elastic-plastic subclasses): every DOF a 1e4 spring.
+template <class Constraint>
+Constraint* springy(Constraint* g)
+{
+	for (int i = 0; i < 6; i++)
+	{
+		g->enableSpring(i, true);
+		g->setStiffness(i, 1e4);
+	}
+	return g;
+}
+
+#ifndef BP_UPSTREAM_ONLY
+// The elastic-plastic classes: 1e4 springs, caps of 1 kN and half the load moment, never breaking.
+template <class Constraint>
+Constraint* elasticPlastic(Constraint* g)
+{
+	for (int i = 0; i < 6; i++)
+	{
+		g->setStiffness(i, 1e4);
+		g->setMaxForce(i, i < 3 ? 1e3 : kYieldCap_nm);
+	}
+	g->setMaxPlasticStrain(1e6);
+	g->setMaxPlasticRotation(1e6);
+	return g;
+}
+#endif
+
 btTypedConstraint* makeJoint(JointKind kind, btRigidBody& anchor, btRigidBody& box, const btVector3& pivot)
 {
 	// the joint sits at pivot (world), kArm_m from the box centre along +Z; hinge axis X: gravity bends it
@@ -53,52 +81,16 @@ btTypedConstraint* makeJoint(JointKind kind, btRigidBody& anchor, btRigidBody& b
 		}
 #endif
 		case JointKind::Spring:
-		{
-			auto* g = new btGeneric6DofSpringConstraint(anchor, box, at(inAnchor), at(inBox), true);
-			for (int i = 0; i < 6; i++)
-			{
-				g->enableSpring(i, true);
-				g->setStiffness(i, 1e4);
-			}
-			return g;
-		}
+			return springy(new btGeneric6DofSpringConstraint(anchor, box, at(inAnchor), at(inBox), true));
 #ifndef BP_UPSTREAM_ONLY
 		case JointKind::ElasticPlastic:
-		{
-			auto* g = new bt6DofElasticPlasticConstraint(anchor, box, at(inAnchor), at(inBox), true);
-			for (int i = 0; i < 6; i++)
-			{
-				g->setStiffness(i, 1e4);
-				g->setMaxForce(i, i < 3 ? 1e3 : kYieldCap_nm);
-			}
-			g->setMaxPlasticStrain(1e6);
-			g->setMaxPlasticRotation(1e6);
-			return g;
-		}
+			return elasticPlastic(new bt6DofElasticPlasticConstraint(anchor, box, at(inAnchor), at(inBox), true));
 #endif
 		case JointKind::Spring2:
-		{
-			auto* g = new btGeneric6DofSpring2Constraint(anchor, box, at(inAnchor), at(inBox));
-			for (int i = 0; i < 6; i++)
-			{
-				g->enableSpring(i, true);
-				g->setStiffness(i, 1e4);
-			}
-			return g;
-		}
+			return springy(new btGeneric6DofSpring2Constraint(anchor, box, at(inAnchor), at(inBox)));
 #ifndef BP_UPSTREAM_ONLY
 		case JointKind::ElasticPlastic2:
-		{
-			auto* g = new bt6DofElasticPlastic2Constraint(anchor, box, at(inAnchor), at(inBox));
-			for (int i = 0; i < 6; i++)
-			{
-				g->setStiffness(i, 1e4);
-				g->setMaxForce(i, i < 3 ? 1e3 : kYieldCap_nm);
-			}
-			g->setMaxPlasticStrain(1e6);
-			g->setMaxPlasticRotation(1e6);
-			return g;
-		}
+			return elasticPlastic(new bt6DofElasticPlastic2Constraint(anchor, box, at(inAnchor), at(inBox)));
 #endif
 		default:
 			break;
