@@ -72,16 +72,17 @@ def main(patched_json, unpatched_json, out_md, command):
         "",
         "## Scaling",
         "",
-        "| N | plastic hinge idle: step [ms] | per joint [ns] | plastic hinge yielding: step [ms] | per joint [ns] | elastic-plastic2: step [ms] | per joint [ns] | scene memory per joint [KB] |",
-        "|---|---|---|---|---|---|---|---|",
+        "| N | plastic hinge idle: step [ms] | per joint [ns] | plastic hinge yielding: step [ms] | per joint [ns] | upstream hinge motor: step [ms] | per joint [ns] | elastic-plastic2: step [ms] | per joint [ns] | scene memory per joint [KB] |",
+        "|---|---|---|---|---|---|---|---|---|---|",
     ]
     for n in (10, 100, 1000, 10000):
         cells = []
-        for k in ("plastic_hinge_idle", "plastic_hinge_yielding", "elastic_plastic2"):
+        for k in ("plastic_hinge_idle", "plastic_hinge_yielding", "hinge_motor", "elastic_plastic2"):
             b = p.get((k, n))
             cells += [f"{us(b) / 1000:.3f}", f"{us(b) * 1000 / n:.0f}"] if b else ["", ""]
         mem = p.get(("plastic_hinge_idle", n))
         lines.append(f"| {n} | " + " | ".join(cells) + f" | {mem['scene_bytes_per_joint'] / 1024:.1f} |" if mem else " |")
+    motor = p.get(("hinge_motor", 10000))
     big = p.get(("plastic_hinge_yielding", 10000))
     big2 = p.get(("elastic_plastic2", 10000))
     if big and big2:
@@ -90,6 +91,14 @@ def main(patched_json, unpatched_json, out_md, command):
             "",
             f"10000 yielding plastic hinges: {us(big) / 1000:.2f} ms per step, 60 Hz real time on one core: **{verdict(big)}**; "
             f"10000 elastic-plastic2 joints: {us(big2) / 1000:.2f} ms, **{verdict(big2)}** (budget 16.7 ms).",
+        ]
+    if big and motor:
+        lines += [
+            "",
+            f"Per joint, moving (yielding) joints cost more at N = 10000 than at 1000. Upstream's hinge with a motor,",
+            f"whose bodies move the same way, grows the same: {us(motor) / 1000:.2f} ms for 10000 "
+            f"(plastic hinge / hinge motor = {us(big) / us(motor):.2f}), so the growth is in the moving bodies",
+            "(cache, broadphase updates), not in the plastic bookkeeping; idle joints grow linearly.",
         ]
     lines += [
         "",

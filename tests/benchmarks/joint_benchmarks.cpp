@@ -44,7 +44,7 @@ BENCHMARK_CAPTURE(stepScene, elastic_plastic, JointKind::ElasticPlastic)->Arg(1)
 BENCHMARK_CAPTURE(stepScene, elastic_plastic2, JointKind::ElasticPlastic2)->Arg(1)->Arg(10)->Arg(100)->Arg(1000)->Arg(10000);
 #endif
 BENCHMARK_CAPTURE(stepScene, hinge_locked, JointKind::HingeLocked)->Arg(1)->Arg(100)->Arg(10000);
-BENCHMARK_CAPTURE(stepScene, hinge_motor, JointKind::HingeMotor)->Arg(1)->Arg(100);
+BENCHMARK_CAPTURE(stepScene, hinge_motor, JointKind::HingeMotor)->Arg(1)->Arg(100)->Arg(1000)->Arg(10000);
 BENCHMARK_CAPTURE(stepScene, fixed_breakable, JointKind::FixedBreakable)->Arg(1)->Arg(100);
 BENCHMARK_CAPTURE(stepScene, spring, JointKind::Spring)->Arg(1)->Arg(100);
 BENCHMARK_CAPTURE(stepScene, spring2, JointKind::Spring2)->Arg(1)->Arg(100)->Arg(10000);
