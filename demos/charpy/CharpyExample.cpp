@@ -2,7 +2,6 @@
 // physics, the browser draws the world. Rendering only reads the world.
 #include "CharpyExample.h"
 
-#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
@@ -15,6 +14,7 @@
 #include "CommonInterfaces/CommonParameterInterface.h"
 #include "CommonInterfaces/CommonRenderInterface.h"
 
+#include "CharpyControls.h"
 #include "CharpyScene.h"
 #include "CharpyView.h"
 
@@ -80,25 +80,6 @@ public:
 	bool keyboardCallback(int, int) override { return false; }
 
 private:
-	// Slider values (btScalar, as the parameter interface wants), in the units their names say.
-	struct Controls
-	{
-		btScalar yieldStress_MPa = 400;
-		btScalar friction = 0;
-		btScalar releaseAngle_rad = 2.8;
-		btScalar maxPlasticRotation_rad = 3;
-		btScalar frameStep_ms = 0.1;
-		btScalar solverIterations = 10;
-		btScalar partPairs = 1;
-		btScalar anvilGap_mm = 40;
-		bool operator!=(const Controls& o) const
-		{
-			return yieldStress_MPa != o.yieldStress_MPa || friction != o.friction || releaseAngle_rad != o.releaseAngle_rad ||
-				   maxPlasticRotation_rad != o.maxPlasticRotation_rad || frameStep_ms != o.frameStep_ms ||
-				   solverIterations != o.solverIterations || partPairs != o.partPairs || anvilGap_mm != o.anvilGap_mm;
-		}
-	};
-
 	void registerControls()
 	{
 		CommonParameterInterface* parameters = m_guiHelper->getParameterInterface();
@@ -113,15 +94,8 @@ private:
 			if (auto method = parseCharpyMethod(item)) static_cast<CharpyExample*>(self)->m_method = int(*method);
 		};
 		parameters->registerComboBox(combo);
-		slider(parameters, "yield stress (MPa)", &m_controls.yieldStress_MPa, 50, 2000, false);
-		slider(parameters, "friction", &m_controls.friction, 0, 1, false);
-		slider(parameters, "release angle (rad)", &m_controls.releaseAngle_rad, 0.5, 3.0, false);
-		slider(parameters, "max plastic rotation (rad)", &m_controls.maxPlasticRotation_rad, 0.5, 6, false);
-		slider(parameters, "frame step (ms)", &m_controls.frameStep_ms, 0.01, 2, false);
-		slider(parameters, "solver iterations", &m_controls.solverIterations, 1, 100, true);
-		slider(parameters, "specimen part pairs", &m_controls.partPairs, 1, 8, true);
-		slider(parameters, "anvil gap (mm)", &m_controls.anvilGap_mm, 20, 50, false);
-		slider(parameters, "slow motion (sim s per s)", &m_simulatedPerRealSecond, 0.001, 0.1, false);
+		for (const CharpySlider& s : kCharpySliders) slider(parameters, s.label, &(m_controls.*s.value), s.min, s.max, s.integers);
+		slider(parameters, "slow motion (sim s per s)", &m_simulatedPerRealSecond, 0.001f, 0.1f, false);
 	}
 
 	static void slider(CommonParameterInterface* parameters, const char* name, btScalar* value, float min, float max, bool integers)
@@ -138,16 +112,7 @@ private:
 	void rebuild()
 	{
 		m_applied = m_controls;
-		CharpyParameters p;
-		p.method = charpyMethodByNumber(m_method);
-		p.yield_stress_pa = double(m_controls.yieldStress_MPa) * 1e6;
-		p.friction = double(m_controls.friction);
-		p.release_angle_rad = double(m_controls.releaseAngle_rad);
-		p.max_plastic_rotation_rad = double(m_controls.maxPlasticRotation_rad);
-		p.dt_s = double(m_controls.frameStep_ms) * 1e-3;
-		p.solver_iterations = int(std::lround(double(m_controls.solverIterations)));
-		p.parts = p.method == CharpyMethod::RigidBody ? 1 : 2 * int(std::lround(double(m_controls.partPairs)));
-		p.anvil_gap_m = double(m_controls.anvilGap_mm) * 1e-3;
+		const CharpyParameters p = charpyParametersFromControls(m_controls, charpyMethodByNumber(m_method));
 		m_parameters = p;
 		m_guiHelper->removeAllGraphicsInstances();
 		m_scene.reset();
@@ -176,8 +141,8 @@ private:
 
 	GUIHelperInterface* m_guiHelper;
 	int m_method;
-	Controls m_controls;
-	Controls m_applied;
+	CharpyControls m_controls;  // moved by the sliders
+	CharpyControls m_applied;   // what the current scene was built from
 	btScalar m_simulatedPerRealSecond = 0.01;
 	CharpyParameters m_parameters;
 	std::unique_ptr<CharpyScene> m_scene;
