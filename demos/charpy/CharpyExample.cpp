@@ -69,11 +69,7 @@ public:
 		}
 	}
 
-	void resetCamera() override
-	{
-		const CharpyCamera camera = charpyCamera(m_parameters);
-		m_guiHelper->resetCamera(camera.distance_m, camera.yaw_deg, camera.pitch_deg, camera.target_m[0], camera.target_m[1], camera.target_m[2]);
-	}
+	void resetCamera() override { resetCharpyCamera(m_guiHelper, m_parameters); }
 
 	bool mouseMoveCallback(float, float) override { return false; }
 	bool mouseButtonCallback(int, int, float, float) override { return false; }
@@ -127,8 +123,7 @@ private:
 			m_error = e.what();  // shown on screen; the previous scene is gone, nothing is simulated
 			return;
 		}
-		createCharpyGraphics(m_guiHelper, *m_scene);
-		resetCamera();
+		showCharpyScene(m_guiHelper, *m_scene);
 	}
 
 	void drawEnergyPanel()

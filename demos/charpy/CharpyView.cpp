@@ -28,8 +28,15 @@ CharpyCamera charpyCamera(const CharpyParameters& p)
 	return camera;
 }
 
-void createCharpyGraphics(GUIHelperInterface* guiHelper, CharpyScene& scene)
+void resetCharpyCamera(GUIHelperInterface* guiHelper, const CharpyParameters& parameters)
 {
+	const CharpyCamera camera = charpyCamera(parameters);
+	guiHelper->resetCamera(camera.distance_m, camera.yaw_deg, camera.pitch_deg, camera.target_m[0], camera.target_m[1], camera.target_m[2]);
+}
+
+void showCharpyScene(GUIHelperInterface* guiHelper, CharpyScene& scene)
+{
+	guiHelper->removeAllGraphicsInstances();
 	btDiscreteDynamicsWorld* world = scene.world();
 	const auto& parts = scene.specimenParts();
 	for (int i = 0; i < world->getNumCollisionObjects(); i++)
@@ -42,6 +49,7 @@ void createCharpyGraphics(GUIHelperInterface* guiHelper, CharpyScene& scene)
 		// alpha 1: btVector3(r, g, b) would leave w = 0, a fully transparent instance
 		guiHelper->createCollisionObjectGraphicsObject(object, btVector4(rgb[0], rgb[1], rgb[2], 1));
 	}
+	resetCharpyCamera(guiHelper, scene.parameters());
 }
 
 std::string charpyEnergyPanel(const CharpyScene& scene)

@@ -26,8 +26,11 @@ extern const float kCharpySpecimenRgb[3];
 extern const float kCharpyAnvilRgb[3];
 extern const float kCharpyHammerRgb[3];
 
-// Graphics objects for every body of the scene's world.
-void createCharpyGraphics(GUIHelperInterface* guiHelper, CharpyScene& scene);
+// Graphics objects for every body of the scene's world (replacing any there were) and the camera.
+void showCharpyScene(GUIHelperInterface* guiHelper, CharpyScene& scene);
+
+// The camera of charpyCamera(parameters).
+void resetCharpyCamera(GUIHelperInterface* guiHelper, const CharpyParameters& parameters);
 
 // The energy balance as text lines (J, rad, ms).
 std::string charpyEnergyPanel(const CharpyScene& scene);

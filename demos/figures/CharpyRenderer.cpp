@@ -32,13 +32,7 @@ int CharpyRenderer::width() const { return m_app->m_window->getWidth(); }
 
 int CharpyRenderer::height() const { return m_app->m_window->getHeight(); }
 
-void CharpyRenderer::show(CharpyScene& scene)
-{
-	m_gui->removeAllGraphicsInstances();
-	createCharpyGraphics(m_gui.get(), scene);
-	const CharpyCamera camera = charpyCamera(scene.parameters());
-	m_gui->resetCamera(camera.distance_m, camera.yaw_deg, camera.pitch_deg, camera.target_m[0], camera.target_m[1], camera.target_m[2]);
-}
+void CharpyRenderer::show(CharpyScene& scene) { showCharpyScene(m_gui.get(), scene); }
 
 Image CharpyRenderer::render(CharpyScene& scene, const std::string& text)
 {

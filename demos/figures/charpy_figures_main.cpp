@@ -4,11 +4,7 @@
 //
 //   build/bin/charpy_figures [--out=DIR] [--width=PX] [--height=PX] [--method=NAME]
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <memory>
 #include <string>
-#include <vector>
 
 #include "CharpyMoments.h"
 #include "CharpyRenderer.h"
