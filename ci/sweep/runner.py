@@ -69,12 +69,12 @@ def run_all(runner, configurations, out_csv, jobs, timeout_s=600, first_columns=
     todo = [c for c in configurations if c["key"] not in finished]
     total = len(configurations)
     print(f"{len(finished)}/{total} already in {out_csv}, {len(todo)} to run on {jobs} jobs", file=log)
+    order = {k: i for i, k in enumerate(keys)}
     start = time.monotonic()
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
         futures = [pool.submit(run_one, runner, c, timeout_s) for c in todo]
         for n, future in enumerate(concurrent.futures.as_completed(futures), 1):
             rows.append(future.result())
-            order = {k: i for i, k in enumerate(keys)}
             rows.sort(key=lambda r: order[r["key"]])
             csvfile.write_rows(out_csv, rows, first_columns)
             elapsed = time.monotonic() - start

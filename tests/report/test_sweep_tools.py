@@ -87,8 +87,7 @@ class ReportTest(unittest.TestCase):
         os.environ["FAKE_CHARPY_LOG"] = os.path.join(d, "calls.log")
         csv_path = os.path.join(d, "sweep.csv")
         runner.run_all(FAKE, charpy_sweep.configurations(quick=True), csv_path, jobs=2, log=open(os.devnull, "w"))
-        charpy_report.csvfile_path = csv_path
-        md, png = charpy_report.report(csvfile.read_rows(csv_path), d, "test")
+        md, png = charpy_report.report(csvfile.read_rows(csv_path), d, "test", "sweep.csv")
         with open(png, "rb") as f:
             self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n")
         self.assertGreater(os.path.getsize(png), 10000)
