@@ -191,3 +191,121 @@ TYPED_TEST(ElasticPlastic, SteelStiffnessStaysFiniteAndNeverGainsEnergy)
 		EXPECT_LE(maxEnergy, e0 * 1.01) << "dt " << dt;
 	}
 }
+
+// A rigid-plastic DOF that is pushed off its lock but held back with far less than its maximum force is
+// position drift, not plastic flow: no work is booked and the lock pulls it back.
+TYPED_TEST(ElasticPlastic, DriftHeldBelowTheCapIsNotPlasticFlow)
+{
+	Rig<TypeParam> rig;  // every DOF rigid-plastic, capped at 1e6 N / N m
+	btTransform moved = rig.body->getWorldTransform();
+	moved.setOrigin(btVector3(btScalar(1e-3), 0, 0));
+	rig.body->setWorldTransform(moved);
+	rig.body->setLinearVelocity(btVector3(btScalar(0.01), 0, 0));  // still moving away from the lock
+	for (int i = 0; i < 200; i++)
+	{
+		rig.w.world.stepSimulation(btScalar(kDt), 0);
+	}
+	EXPECT_EQ(rig.c->getCurrentPlasticStrain(), 0.0);
+	EXPECT_EQ(rig.c->getAbsorbedEnergy(), 0.0);
+	EXPECT_LT(std::fabs(double(rig.body->getCenterOfMassPosition().x())), 1e-4) << "the lock should pull the drift back";
+}
+
+namespace
+{
+// How the yielding body is held in the energy-balance test below.
+enum class Holder
+{
+	FixedBodyA,       // the one-body constructor: body A is Bullet's fixed body
+	DynamicBodyA,     // two dynamic bodies
+	StaticBodyB,      // body B has zero mass: its feedback is the one read back
+	UserFeedback,     // like FixedBodyA, with a btJointFeedback the user attached
+	FeedbackRemoved,  // like FixedBodyA, after setJointFeedback(0)
+};
+
+template <class C>
+C* makeTwoBodyConstraint(btRigidBody& a, btRigidBody& b, const btTransform& frameA, const btTransform& frameB);
+template <>
+bt6DofElasticPlasticConstraint* makeTwoBodyConstraint(btRigidBody& a, btRigidBody& b, const btTransform& frameA, const btTransform& frameB)
+{
+	return new bt6DofElasticPlasticConstraint(a, b, frameA, frameB, true);
+}
+template <>
+bt6DofElasticPlastic2Constraint* makeTwoBodyConstraint(btRigidBody& a, btRigidBody& b, const btTransform& frameA, const btTransform& frameB)
+{
+	return new bt6DofElasticPlastic2Constraint(a, b, frameA, frameB);
+}
+}  // namespace
+
+// A moment above the cap about the X axis of a frame that is turned and set off the centre of mass (so the linear
+// rows carry forces and moments too): the joint yields, and the work put in equals the kinetic energy gained plus
+// the plastic work, which equals the cap times the plastic rotation. The forces are read back from the solver's
+// feedback for every way of holding the body. The last step's flow is booked when the next step starts, so the
+// balance adds it (cap times the last step's rotation). What remains is the integrator's own first-order energy
+// error, 1/2 I dw w over the run: 0.7 % here (100 steps of 1 ms, up to 53 rad/s).
+TYPED_TEST(ElasticPlastic, YieldingWorkBalancesWithForcesReadBackFromTheSolver)
+{
+	for (Holder holder : {Holder::FixedBodyA, Holder::DynamicBodyA, Holder::StaticBodyB, Holder::UserFeedback, Holder::FeedbackRemoved})
+	{
+		PhysicsWorld w;
+		btTransform frame;  // in the moving body: 0.05 m off its centre, turned 30 degrees about Z
+		frame.setIdentity();
+		frame.setRotation(btQuaternion(btVector3(0, 0, 1), btScalar(M_PI / 6)));
+		frame.setOrigin(btVector3(btScalar(0.05), btScalar(-0.03), 0));
+		btRigidBody* body = w.addBox(btVector3(0.1, 0.1, 0.1), 1.0, btVector3(0, 0, 0));
+		btRigidBody* other = nullptr;
+		TypeParam* c = nullptr;
+		btJointFeedback userFeedback;
+		if (holder == Holder::DynamicBodyA || holder == Holder::StaticBodyB)
+		{
+			const double otherMass = holder == Holder::StaticBodyB ? 0.0 : 4.0;
+			other = w.addBox(btVector3(0.1, 0.1, 0.1), otherMass, btVector3(btScalar(0.3), 0, 0));
+			btTransform frameInOther = other->getWorldTransform().inverse() * frame;
+			if (holder == Holder::StaticBodyB)
+				c = makeTwoBodyConstraint<TypeParam>(*body, *other, frame, frameInOther);
+			else
+				c = makeTwoBodyConstraint<TypeParam>(*other, *body, frameInOther, frame);
+		}
+		else
+		{
+			c = makeConstraint<TypeParam>(*body, frame);
+		}
+		if (holder == Holder::UserFeedback) c->setJointFeedback(&userFeedback);
+		if (holder == Holder::FeedbackRemoved) c->setJointFeedback(nullptr);
+		for (int i = 0; i < 6; i++)
+		{
+			setStiffness(c, i, 0.0);  // rigid-plastic
+			c->setMaxForce(i, btScalar(1e6));
+		}
+		const double cap = 2.0;  // N m about the frame's X axis
+		c->setMaxForce(3, btScalar(cap));
+		w.world.addConstraint(c, true);
+		const btVector3 axis = frame.getBasis().getColumn(0);  // the moving body starts at identity
+		const double torque = 3.0 * cap;
+		double workIn = 0;
+		for (int i = 0; i < 100; i++)
+		{
+			body->applyTorque(axis * btScalar(torque));
+			w.world.stepSimulation(btScalar(kDt), 0);
+			// the orientation advanced with the velocity after the step
+			workIn += torque * double(body->getAngularVelocity().dot(axis)) * kDt;
+		}
+		double kinetic = w.kineticEnergy(body);
+		if (other) kinetic += w.kineticEnergy(other);
+		const double absorbed = c->getAbsorbedEnergy();
+		double lastStepRotation = std::fabs(double(body->getAngularVelocity().dot(axis))) * kDt;
+		if (other) lastStepRotation = std::fabs(double((body->getAngularVelocity() - other->getAngularVelocity()).dot(axis))) * kDt;
+		const char* names[] = {"fixed body A", "dynamic body A", "static body B", "user feedback", "feedback removed"};
+		SCOPED_TRACE(names[int(holder)]);
+		ASSERT_GT(c->getCurrentPlasticRotation(), 0.1) << "the DOF should have yielded";
+		EXPECT_EQ(c->getCurrentPlasticStrain(), 0.0) << "the linear DOFs hold";
+		EXPECT_NEAR(absorbed, cap * c->getCurrentPlasticRotation(), 1e-5 * absorbed);
+		EXPECT_NEAR(workIn, kinetic + absorbed + cap * lastStepRotation, 0.01 * workIn);
+		if (holder == Holder::UserFeedback)
+		{
+			EXPECT_EQ(c->getJointFeedback(), &userFeedback);
+			EXPECT_GT(userFeedback.m_appliedTorqueBodyA.length(), 0.0) << "the solver fills the user's feedback";
+		}
+		w.world.removeConstraint(c);
+		delete c;
+	}
+}
