@@ -48,6 +48,7 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	r.error_pct = 100.0 * (r.energy_loss_J - r.analytic_J) / r.analytic_J;
 	r.plastic_rotation_rad = scene.plasticRotation_rad();
 	r.bend_angle_rad = scene.bendAngle_rad();
+	r.end_bend_angle_rad = scene.endToEndBend_rad();
 	r.max_energy_gain_J = scene.maxEnergyGain_j();
 	r.max_penetration_m = scene.maxPenetration_m();
 	r.max_speed_m_s = scene.maxSpeed_m_s();
@@ -85,7 +86,8 @@ std::string toJson(const CharpyResult& r)
 		<< ",\"other_loss_J\":" << number(r.other_loss_J) << ",\"analytic_J\":" << number(r.analytic_J)
 		<< ",\"theta_pass_rad\":" << number(r.theta_pass_rad) << ",\"plastic_moment_Nm\":" << number(r.plastic_moment_Nm)
 		<< ",\"error_pct\":" << number(r.error_pct) << ",\"plastic_rotation_rad\":" << number(r.plastic_rotation_rad)
-		<< ",\"bend_angle_rad\":" << number(r.bend_angle_rad) << ",\"impact_speed_m_s\":" << number(r.impact_speed_m_s)
+		<< ",\"bend_angle_rad\":" << number(r.bend_angle_rad)
+		<< ",\"end_bend_angle_rad\":" << number(r.end_bend_angle_rad) << ",\"impact_speed_m_s\":" << number(r.impact_speed_m_s)
 		<< ",\"broken\":" << flag(r.broken) << ",\"passed_anvils\":" << flag(r.passed_anvils)
 		<< ",\"tunnelled\":" << flag(r.tunnelled) << ",\"finite\":" << flag(r.finite)
 		<< ",\"max_energy_gain_J\":" << number(r.max_energy_gain_J) << ",\"max_penetration_m\":" << number(r.max_penetration_m)

@@ -29,9 +29,10 @@ struct CharpyResult
 	double impact_speed_m_s = 0;
 	double max_energy_gain_J = 0;
 	double max_penetration_m = 0;
-	double max_speed_m_s = 0;     // fastest dynamic body over the run
-	double max_distance_m = 0;
-	double hammer_angle_end_rad = 0;  // pendulum angle from the impact position at the end (< 0: swung on past it)    // farthest dynamic body centre from the origin over the run
+	double end_bend_angle_rad = 0;  // rotation of the last part relative to the first at the end, about any axis
+	double max_speed_m_s = 0;       // fastest dynamic body over the run
+	double max_distance_m = 0;      // farthest dynamic body centre from the origin over the run
+	double hammer_angle_end_rad = 0;  // pendulum angle from the impact position at the end (< 0: swung on past it)
 	bool broken = false;
 	bool passed_anvils = false;
 	bool tunnelled = false;   // a rigid specimen got past the anvils: only possible through penetration

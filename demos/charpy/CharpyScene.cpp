@@ -640,6 +640,16 @@ double CharpyScene::bendAngle_rad() const
 	return axis.y() < 0 ? -angle : angle;
 }
 
+double CharpyScene::endToEndBend_rad() const
+{
+	if (m_parts.size() < 2)
+	{
+		return 0;
+	}
+	btQuaternion relative = m_parts.back()->getOrientation() * m_parts.front()->getOrientation().inverse();
+	return relative.getAngleShortestPath();
+}
+
 double CharpyScene::hammerAngle_rad() const
 {
 	if (!m_hammer)

@@ -47,6 +47,7 @@ public:
 	double plasticWork_j() const;
 	double plasticRotation_rad() const;
 	double bendAngle_rad() const;    // relative rotation of the two middle parts about Y
+	double endToEndBend_rad() const; // rotation angle of the last part relative to the first, about any axis
 	double hammerAngle_rad() const;  // pendulum rotation about Z from the impact position
 	bool broken() const;
 	bool passedAnvils() const;       // every part is behind the anvils' front plane (x < 0)

@@ -11,6 +11,8 @@ const double kSpeedLimitPerImpactSpeed = 20.0;
 const double kEnergyGainFraction = 0.01;
 const double kTunnellingLossFraction = 0.05;
 const double kHammerThroughAngle_rad = 0.05;  // about 30 mm of striker travel past the specimen's front face
+const double kCameApartBendFraction = 0.5;    // of theta_pass, end to end
+const double kCameApartWorkFraction = 0.5;    // of the energy lost
 
 std::string format(const char* pattern, double a, double b)
 {
@@ -32,6 +34,8 @@ std::string_view charpyVerdictName(CharpyVerdict verdict)
 			return "energy-gain";
 		case CharpyVerdict::Tunnelling:
 			return "tunnelling";
+		case CharpyVerdict::CameApart:
+			return "came-apart";
 		case CharpyVerdict::Stable:
 			return "stable";
 	}
@@ -73,6 +77,14 @@ CharpyVerdict classifyCharpyRun(const CharpyResult& r, std::string* why)
 	{
 		verdict = CharpyVerdict::Tunnelling;
 		reason = format("the hammer swung through losing %.3g J < 5 %% of Mp*theta_pass = %.4g J", r.energy_loss_J, r.analytic_J);
+	}
+	else if (r.passed_anvils && !r.broken && r.end_bend_angle_rad < kCameApartBendFraction * r.theta_pass_rad &&
+			 r.plastic_work_J < kCameApartWorkFraction * r.energy_loss_J)
+	{
+		verdict = CharpyVerdict::CameApart;
+		reason = format("the unbroken specimen passed the anvils bent %.3g rad end to end (theta_pass %.3g rad)",
+						r.end_bend_angle_rad, r.theta_pass_rad) +
+				 format(" with %.3g J of plastic work for %.4g J lost", r.plastic_work_J, r.energy_loss_J);
 	}
 	else
 	{

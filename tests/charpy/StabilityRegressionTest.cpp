@@ -1,6 +1,7 @@
 // A fast subset of the stability matrix (ci/stability.py, report/STABILITY.md) as regression tests:
-// the new constraints stay finite and never gain energy in stiff and extreme cells, and the
-// upstream failures the thesis describes are still reproduced and classified.
+// the new constraints stay finite, never gain energy and book no more plastic work than the energy
+// lost in stiff and extreme cells, and the upstream failures the thesis describes are still reproduced
+// and classified.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -16,10 +17,12 @@ struct Cell
 	CharpyMethod method;
 	void (*apply)(CharpyParameters&);
 	CharpyVerdict expected;
-	// plastic work at most the energy lost: holds for the plastic hinge (it books Mp times the rotation
-	// it made at its cap). The elastic-plastic classes book yield from the DOF's position alone and
-	// over-book when the solver lets a DOF drift (CHANGES.md, known open points), so they are not held to it.
-	bool workBalance = false;
+	// Stable cells: the plastic work the joints book is at most this times the energy lost. The joints book
+	// only what they did at their cap (the plastic hinge its limit row's impulse, the elastic-plastic classes
+	// the forces read back from the solver), so with a converged solver it is a part of the loss. A chain of 8
+	// light parts at 10 iterations is not converged: it books 5.7 % more than it loses (1.02 at 100 iterations
+	// for EP2, report/STABILITY.md).
+	double maxWorkPerLoss = 1.02;
 };
 
 CharpyResult run(const Cell& cell, CharpyParameters& p)
@@ -30,14 +33,17 @@ CharpyResult run(const Cell& cell, CharpyParameters& p)
 }
 
 const Cell kCells[] = {
-	{"fy800_plastic_hinge", CharpyMethod::PlasticHinge, [](CharpyParameters& p) { p.yield_stress_pa = 800e6; }, CharpyVerdict::Stable, true},
+	{"fy800_plastic_hinge", CharpyMethod::PlasticHinge, [](CharpyParameters& p) { p.yield_stress_pa = 800e6; }, CharpyVerdict::Stable},
 	{"fy800_elastic_plastic", CharpyMethod::ElasticPlastic, [](CharpyParameters& p) { p.yield_stress_pa = 800e6; }, CharpyVerdict::Stable},
 	{"fy800_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.yield_stress_pa = 800e6; }, CharpyVerdict::Stable},
 	{"fy2000_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.yield_stress_pa = 2000e6; }, CharpyVerdict::Stable},
-	{"dt60Hz_plastic_hinge", CharpyMethod::PlasticHinge, [](CharpyParameters& p) { p.dt_s = 1.0 / 60; }, CharpyVerdict::Stable, true},
+	{"dt60Hz_plastic_hinge", CharpyMethod::PlasticHinge, [](CharpyParameters& p) { p.dt_s = 1.0 / 60; }, CharpyVerdict::Stable},
 	{"dt60Hz_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.dt_s = 1.0 / 60; }, CharpyVerdict::Stable},
-	{"parts4_plastic_hinge", CharpyMethod::PlasticHinge, [](CharpyParameters& p) { p.parts = 4; }, CharpyVerdict::Stable, true},
-	{"parts8_elastic_plastic", CharpyMethod::ElasticPlastic, [](CharpyParameters& p) { p.parts = 8; }, CharpyVerdict::Stable},
+	{"parts4_plastic_hinge", CharpyMethod::PlasticHinge, [](CharpyParameters& p) { p.parts = 4; }, CharpyVerdict::Stable},
+	{"parts8_elastic_plastic", CharpyMethod::ElasticPlastic, [](CharpyParameters& p) { p.parts = 8; }, CharpyVerdict::Stable, 1.10},
+	// many light parts under the heavy hammer: the chain lets go in the solver, and the joints book no work for it
+	{"parts32_plastic_hinge", CharpyMethod::PlasticHinge, [](CharpyParameters& p) { p.parts = 32; }, CharpyVerdict::CameApart},
+	{"dt1ms_nosub_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.dt_s = 1e-3; p.contact_substep_s = 0; }, CharpyVerdict::CameApart},
 	{"iterations1_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.solver_iterations = 1; }, CharpyVerdict::Stable},
 	{"stiffE_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.youngs_modulus_pa = 2000e9; }, CharpyVerdict::Stable},
 	// upstream, as it is: the spring explodes (thesis fig. 3.5), a rigid specimen tunnels at 1/60 s
@@ -63,7 +69,7 @@ TEST_P(StabilityCell, HasTheExpectedVerdict)
 		EXPECT_TRUE(r.finite);
 		EXPECT_LE(r.max_energy_gain_J, 0.01 * r.E0_J) << "energy gain";
 		EXPECT_GT(r.plastic_work_J, 0.05 * r.analytic_J) << "no plastic work: the hammer went through";
-		if (GetParam().workBalance) EXPECT_LE(r.plastic_work_J, r.energy_loss_J * 1.02) << "more plastic work than energy lost";
+		EXPECT_LE(r.plastic_work_J, r.energy_loss_J * GetParam().maxWorkPerLoss) << "more plastic work than energy lost";
 	}
 }
 
