@@ -4,6 +4,8 @@ A configuration is a dict: 'key' (unique name), 'flags' (runner flags) and any o
 which are copied into its CSV row next to the runner's JSON fields.
 """
 import concurrent.futures
+import functools
+import hashlib
 import json
 import os
 import subprocess
@@ -30,11 +32,22 @@ def in_shard(configurations, shard):
     return [c for index, c in enumerate(configurations) if index % n == i - 1]
 
 
+@functools.lru_cache(maxsize=None)
+def runner_id(path):
+    """First 16 hex digits of the SHA-256 of the runner's file: a row made by another build is not reused."""
+    digest = hashlib.sha256()
+    with open(path, "rb") as f:
+        for block in iter(lambda: f.read(1 << 20), b""):
+            digest.update(block)
+    return digest.hexdigest()[:16]
+
+
 def run_one(runner, configuration, timeout_s):
     """One run: the CSV row (configuration columns + JSON fields, or a 'failure' column)."""
     row = {k: v for k, v in configuration.items() if k not in ("flags", "runner")}
     row["flags"] = " ".join(configuration["flags"])
     runner = configuration.get("runner") or runner
+    row["runner_id"] = runner_id(runner)
     try:
         done = subprocess.run([runner, "--json"] + configuration["flags"], capture_output=True, text=True, timeout=timeout_s)
     except subprocess.TimeoutExpired:
@@ -56,15 +69,17 @@ def run_all(runner, configurations, out_csv, jobs, timeout_s=600, first_columns=
     """Runs every configuration not yet in out_csv, keeping the finished rows; returns all rows.
 
     out_csv is rewritten whole after each finished run, so an interrupted sweep loses nothing
-    and the next call resumes where it stopped.
+    and the next call resumes where it stopped. A row is reused only if the same runner binary
+    made it (runner_id): after a rebuild that changed the runner every row is run again.
     """
     if not os.access(runner, os.X_OK):
         raise SystemExit(f"runner {runner} not found or not executable (build it: cmake --build build --target charpy)")
     keys = [c["key"] for c in configurations]
     if len(set(keys)) != len(keys):
         raise SystemExit("configurations have duplicate keys")
-    wanted = set(keys)
-    rows = [r for r in csvfile.read_rows(out_csv) if r.get("key") in wanted and not r.get("failure")]
+    expected_id = {c["key"]: runner_id(c.get("runner") or runner) for c in configurations}
+    rows = [r for r in csvfile.read_rows(out_csv)
+            if r.get("key") in expected_id and not r.get("failure") and r.get("runner_id") == expected_id[r["key"]]]
     finished = {r["key"] for r in rows}
     todo = [c for c in configurations if c["key"] not in finished]
     total = len(configurations)

@@ -45,6 +45,17 @@ class SweepTest(unittest.TestCase):
         self.assertEqual(len(rows), len(self.configurations))
         self.assertEqual(csvfile.read_rows(out)[:2], before)
 
+    def test_rows_of_another_runner_build_are_run_again(self):
+        out = os.path.join(self.dir, "sweep.csv")
+        runner.run_all(FAKE, self.configurations[:2], out, jobs=1, log=open(os.devnull, "w"))
+        rebuilt = os.path.join(self.dir, "fake_charpy_rebuilt.py")
+        with open(FAKE) as f, open(rebuilt, "w") as g:
+            g.write(f.read() + "\n# another build\n")
+        os.chmod(rebuilt, 0o755)
+        runner.run_all(rebuilt, self.configurations[:2], out, jobs=1, log=open(os.devnull, "w"))
+        self.assertEqual(len(self.calls()), 4, "rows of the old build were reused")
+        self.assertEqual({r["runner_id"] for r in csvfile.read_rows(out)}, {runner.runner_id(rebuilt)})
+
     def test_failed_runs_are_recorded_and_retried_on_resume(self):
         out = os.path.join(self.dir, "sweep.csv")
         bad = [{"key": "bad", "method": "x", "flags": ["--method=broken-on-purpose"]}]
