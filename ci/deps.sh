@@ -19,7 +19,8 @@ fi
 # pip downloads the pinned sdist; any python3 with pip will do (a pyenv one included)
 python3 -m pip --version >/dev/null 2>&1 || { echo "ci/deps.sh: python3 has no pip: apt-get install python3-pip" >&2; exit 1; }
 # the reports plot with matplotlib (from pip: Debian's python3-matplotlib is not seen by a pyenv python3)
-python3 -c "import matplotlib" >/dev/null 2>&1 || {
-	echo "ci/deps.sh: installing matplotlib with pip"
-	python3 -m pip install --quiet --disable-pip-version-check matplotlib
+# and the GUI text check reads PNGs with Pillow (a dependency of matplotlib; named for clarity)
+python3 -c "import matplotlib, PIL" >/dev/null 2>&1 || {
+	echo "ci/deps.sh: installing matplotlib and Pillow with pip"
+	python3 -m pip install --quiet --disable-pip-version-check matplotlib pillow
 }
