@@ -48,3 +48,8 @@ std::optional<CharpyMethod> parseCharpyMethod(std::string_view name)
 	}
 	return std::nullopt;
 }
+
+bool charpyMethodBooksJointWork(CharpyMethod method)
+{
+	return method == CharpyMethod::PlasticHinge || method == CharpyMethod::ElasticPlastic || method == CharpyMethod::ElasticPlastic2;
+}

@@ -27,3 +27,5 @@ std::string_view charpyMethodDescription(CharpyMethod method);
 // Method 1-8 in thesis order.
 CharpyMethod charpyMethodByNumber(int number);
 std::optional<CharpyMethod> parseCharpyMethod(std::string_view name);
+// The joints of the new constraint classes (methods 6-8) book the plastic work they do at their cap.
+bool charpyMethodBooksJointWork(CharpyMethod method);

@@ -14,6 +14,7 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	CharpyScene scene(parameters);
 	CharpyResult r;
 	r.method = std::string(charpyMethodName(parameters.method));
+	r.joints_book_work = charpyMethodBooksJointWork(parameters.method);
 	r.dt_s = parameters.dt_s;
 	r.auto_dt = parameters.auto_dt;
 	r.iterations = parameters.solver_iterations;

@@ -36,6 +36,7 @@ struct CharpyResult
 	bool broken = false;
 	bool passed_anvils = false;
 	bool tunnelled = false;   // a rigid specimen got past the anvils: only possible through penetration
+	bool joints_book_work = false;  // plastic_work_J is what the joints did at their cap (methods 6-8)
 	bool finite = true;
 };
 

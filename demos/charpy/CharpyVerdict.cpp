@@ -78,7 +78,7 @@ CharpyVerdict classifyCharpyRun(const CharpyResult& r, std::string* why)
 		verdict = CharpyVerdict::Tunnelling;
 		reason = format("the hammer swung through losing %.3g J < 5 %% of Mp*theta_pass = %.4g J", r.energy_loss_J, r.analytic_J);
 	}
-	else if (r.passed_anvils && !r.broken && r.end_bend_angle_rad < kCameApartBendFraction * r.theta_pass_rad &&
+	else if (r.joints_book_work && r.passed_anvils && !r.broken && r.end_bend_angle_rad < kCameApartBendFraction * r.theta_pass_rad &&
 			 r.plastic_work_J < kCameApartWorkFraction * r.energy_loss_J)
 	{
 		verdict = CharpyVerdict::CameApart;

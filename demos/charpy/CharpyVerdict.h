@@ -15,10 +15,10 @@ enum class CharpyVerdict
 	Tunnelling,  // a rigid specimen got past the anvils (it cannot without penetrating them), or the
 	             // hammer swung on past the specimen (more than 0.05 rad) losing less than 5 % of
 	             // Mp * theta_pass: through the specimen, or the specimen through the anvils, without the work
-	CameApart,   // a jointed specimen got past the anvils unbroken, its end parts turned less than half of
-	             // theta_pass relative to each other, and its joints booked less than half of the energy lost as
-	             // plastic work: neither bent nor sheared plastically, so its joints let go in the solver (an
-	             // unconverged chain, e.g. many light parts under the heavy hammer)
+	CameApart,   // a specimen whose joints book their work (methods 6-8) got past the anvils unbroken, its end
+	             // parts turned less than half of theta_pass relative to each other, and its joints booked less
+	             // than half of the energy lost as plastic work: neither bent nor sheared plastically, so its
+	             // joints let go in the solver (an unconverged chain, e.g. many light parts under the hammer)
 	Stable,
 };
 
