@@ -1,5 +1,6 @@
 #include "CharpyRun.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -27,10 +28,12 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	{
 		*history << "time_s,potential_J,kinetic_J,elastic_J,total_J,plastic_work_J,bend_angle_rad,hammer_angle_rad\n";
 	}
+	double maxBend = 0;
 	while (scene.time_s() < parameters.duration_s - 1e-12 && scene.finite())
 	{
 		scene.step();
 		r.frames++;
+		if (!scene.broken()) maxBend = std::max(maxBend, scene.endToEndBend_rad());  // folded while whole
 		if (history)
 		{
 			CharpyEnergies e = scene.energies();
@@ -57,7 +60,11 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	r.hammer_angle_end_rad = scene.hammerAngle_rad();
 	r.broken = scene.broken();
 	r.passed_anvils = scene.passedAnvils();
-	r.tunnelled = r.passed_anvils && parameters.method == CharpyMethod::RigidBody;
+	// Folded at mid-span into a V, the specimen fits between the anvils only once its halves span less than the gap:
+	// bend >= 2 acos(gap / length). An unbroken specimen that got past them with less bend went through the anvils.
+	r.max_bend_rad = maxBend;
+	r.min_pass_bend_rad = 2.0 * std::acos(std::min(1.0, parameters.anvil_gap_m / parameters.specimen_length_m));
+	r.tunnelled = r.passed_anvils && !r.broken && maxBend < r.min_pass_bend_rad;
 	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 	return r;
 }
@@ -90,7 +97,7 @@ std::string toJson(const CharpyResult& r)
 		<< ",\"bend_angle_rad\":" << number(r.bend_angle_rad)
 		<< ",\"end_bend_angle_rad\":" << number(r.end_bend_angle_rad) << ",\"impact_speed_m_s\":" << number(r.impact_speed_m_s)
 		<< ",\"broken\":" << flag(r.broken) << ",\"passed_anvils\":" << flag(r.passed_anvils)
-		<< ",\"tunnelled\":" << flag(r.tunnelled) << ",\"finite\":" << flag(r.finite)
+		<< ",\"max_bend_rad\":" << number(r.max_bend_rad) << ",\"tunnelled\":" << flag(r.tunnelled) << ",\"finite\":" << flag(r.finite)
 		<< ",\"max_energy_gain_J\":" << number(r.max_energy_gain_J) << ",\"max_penetration_m\":" << number(r.max_penetration_m)
 		<< ",\"max_speed_m_s\":" << number(r.max_speed_m_s) << ",\"max_distance_m\":" << number(r.max_distance_m)
 		<< ",\"hammer_angle_end_rad\":" << number(r.hammer_angle_end_rad);
@@ -111,7 +118,7 @@ std::string toSummary(const CharpyResult& r)
 				  r.method.c_str(), r.dt_s, r.auto_dt ? " (auto)" : "", r.iterations, r.internal_steps, r.wall_s, r.E0_J,
 				  r.impact_speed_m_s, r.energy_loss_J, r.plastic_work_J, r.other_loss_J, r.plastic_moment_Nm, r.theta_pass_rad,
 				  r.analytic_J, r.error_pct, r.plastic_rotation_rad, r.broken ? "yes" : "no", r.passed_anvils ? "yes" : "no",
-				  r.tunnelled ? " (TUNNELLED: a rigid specimen cannot pass)" : "", r.max_energy_gain_J, r.max_penetration_m,
+				  r.tunnelled ? " (TUNNELLED: past the anvils with too little bend to fit the gap)" : "", r.max_energy_gain_J, r.max_penetration_m,
 				  r.finite ? "" : "\n  NOT FINITE: the simulation produced NaN or infinity");
 	return text;
 }

@@ -35,7 +35,9 @@ struct CharpyResult
 	double hammer_angle_end_rad = 0;  // pendulum angle from the impact position at the end (< 0: swung on past it)
 	bool broken = false;
 	bool passed_anvils = false;
-	bool tunnelled = false;   // a rigid specimen got past the anvils: only possible through penetration
+	double max_bend_rad = 0;        // largest end-to-end bend while the specimen was whole
+	double min_pass_bend_rad = 0;   // the bend below which the unbroken specimen cannot fit between the anvils
+	bool tunnelled = false;   // unbroken, past the anvils with less than min_pass_bend_rad: through penetration
 	bool joints_book_work = false;  // plastic_work_J is what the joints did at their cap (methods 6-8)
 	bool finite = true;
 };

@@ -67,11 +67,6 @@ CharpyVerdict classifyCharpyRun(const CharpyResult& r, std::string* why)
 		verdict = CharpyVerdict::EnergyGain;
 		reason = format("energy rose %.3g J above E0 = %.4g J", r.max_energy_gain_J, r.E0_J);
 	}
-	else if (r.tunnelled)
-	{
-		verdict = CharpyVerdict::Tunnelling;
-		reason = format("a rigid specimen passed the anvils (max penetration %.3g mm, loss %.4g J)", r.max_penetration_m * 1e3, r.energy_loss_J);
-	}
 	else if (r.impact_speed_m_s > 0 && r.hammer_angle_end_rad < -kHammerThroughAngle_rad &&
 			 r.energy_loss_J < kTunnellingLossFraction * r.analytic_J)
 	{
@@ -85,6 +80,13 @@ CharpyVerdict classifyCharpyRun(const CharpyResult& r, std::string* why)
 		reason = format("the unbroken specimen passed the anvils bent %.3g rad end to end (theta_pass %.3g rad)",
 						r.end_bend_angle_rad, r.theta_pass_rad) +
 				 format(" with %.3g J of plastic work for %.4g J lost", r.plastic_work_J, r.energy_loss_J);
+	}
+	else if (r.tunnelled)
+	{
+		verdict = CharpyVerdict::Tunnelling;
+		reason = format("the unbroken specimen passed the anvils bent at most %.3g rad, below the %.3g rad it needs to fit the gap",
+						r.max_bend_rad, r.min_pass_bend_rad) +
+				 format(" (max penetration %.3g mm, loss %.4g J)", r.max_penetration_m * 1e3, r.energy_loss_J);
 	}
 	else
 	{

@@ -1,0 +1,216 @@
+// The plastic bookkeeping under btSequentialImpulseConstraintSolverMt (a BT_THREADSAFE build of the patched tree):
+// the solver writes the rows back in parallel chunks of 400 rows, so a constraint's rows may be split between two
+// chunks and the chunks may run in any order and on any thread. The booking must not depend on that.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <memory>
+#include <vector>
+
+#include "btBulletDynamicsCommon.h"
+#include "BulletCollision/CollisionDispatch/btSimulationIslandManager.h"
+#include "BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolverMt.h"
+#include "LinearMath/btThreads.h"
+
+#if !BT_THREADSAFE
+#error "this test needs the BT_THREADSAFE build of the patched libraries"
+#endif
+
+namespace
+{
+// Runs the chunks of every loop on the calling thread, last chunk first: a valid scheduler that changes the order.
+class ReverseChunkScheduler : public btITaskScheduler
+{
+public:
+	ReverseChunkScheduler() : btITaskScheduler("ReverseChunks") {}
+	int getMaxNumThreads() const override { return 1; }
+	int getNumThreads() const override { return 1; }
+	void setNumThreads(int) override {}
+	void parallelFor(int iBegin, int iEnd, int grainSize, const btIParallelForBody& body) override
+	{
+		const int grain = grainSize > 0 ? grainSize : 1;
+		for (int end = iEnd; end > iBegin;)
+		{
+			const int begin = std::max(iBegin, iBegin + ((end - iBegin - 1) / grain) * grain);
+			body.forLoop(begin, end);
+			end = begin;
+		}
+	}
+	btScalar parallelSum(int iBegin, int iEnd, int grainSize, const btIParallelSumBody& body) override
+	{
+		btScalar sum = 0;
+		const int grain = grainSize > 0 ? grainSize : 1;
+		for (int end = iEnd; end > iBegin;)
+		{
+			const int begin = std::max(iBegin, iBegin + ((end - iBegin - 1) / grain) * grain);
+			sum += body.sumLoop(begin, end);
+			end = begin;
+		}
+		return sum;
+	}
+};
+
+struct Booking
+{
+	std::vector<double> energy, rotation;
+	std::vector<bool> enabled;
+	bool operator==(const Booking& o) const { return energy == o.energy && rotation == o.rotation && enabled == o.enabled; }
+};
+
+// the first joint whose booking differs, for the failure message
+std::string firstDifference(const Booking& a, const Booking& b)
+{
+	for (size_t i = 0; i < a.energy.size() && i < b.energy.size(); i++)
+	{
+		if (a.energy[i] != b.energy[i] || a.rotation[i] != b.rotation[i] || a.enabled[i] != b.enabled[i])
+		{
+			char text[200];
+			std::snprintf(text, sizeof text, "joint %zu: %.17g J %.17g rad %d vs %.17g J %.17g rad %d", i, a.energy[i], a.rotation[i], int(a.enabled[i]),
+						  b.energy[i], b.rotation[i], int(b.enabled[i]));
+			return text;
+		}
+	}
+	return "sizes differ";
+}
+
+// 1200 bars, each held to the world by a plastic hinge (6 rows) or an elastic-plastic2 joint (6 rows), under moments
+// from 0.5 to 2 times their cap, in one group of 7200 rows (18 write-back chunks, some of them splitting a joint).
+Booking run(btITaskScheduler* scheduler)
+{
+	btSetTaskScheduler(scheduler);
+	btDefaultCollisionConfiguration configuration;
+	btCollisionDispatcher dispatcher(&configuration);
+	btDbvtBroadphase broadphase;
+	btSequentialImpulseConstraintSolverMt solver;
+	btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
+	world.setGravity(btVector3(0, 0, 0));
+	world.getSimulationIslandManager()->setSplitIslands(false);
+	btBoxShape shape(btVector3(0.5, 0.05, 0.05));
+	btVector3 inertia;
+	shape.calculateLocalInertia(1, inertia);
+	const int n = 1200;
+	std::vector<std::unique_ptr<btRigidBody>> bodies;
+	std::vector<std::unique_ptr<btTypedConstraint>> joints;
+	for (int i = 0; i < n; i++)
+	{
+		btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &shape, inertia);
+		info.m_startWorldTransform.setIdentity();
+		info.m_startWorldTransform.setOrigin(btVector3(btScalar(2 * (i % 40)), btScalar(2 * (i / 40)), 0));
+		bodies.emplace_back(new btRigidBody(info));
+		bodies.back()->setActivationState(DISABLE_DEACTIVATION);
+		world.addRigidBody(bodies.back().get(), 0, 0);
+		if (i % 2 == 0)
+		{
+			auto* h = new btPlasticHingeConstraint(*bodies.back(), btVector3(0, 0, 0), btVector3(0, 0, 1));
+			h->setPlasticMoment(2.0);
+			h->setMaxPlasticRotation(btScalar(0.2 + 0.001 * i));
+			joints.emplace_back(h);
+		}
+		else
+		{
+			auto* c = new bt6DofElasticPlastic2Constraint(*bodies.back(), btTransform::getIdentity());
+			for (int d = 0; d < 6; d++) c->setLimit(d, 0, 0);
+			c->setStiffness(5, 0, false);
+			c->setMaxForce(5, 2.0);
+			c->setMaxPlasticRotation(btScalar(0.2 + 0.001 * i));
+			joints.emplace_back(c);
+		}
+		world.addConstraint(joints.back().get());
+	}
+	for (int step = 0; step < 60; step++)
+	{
+		for (int i = 0; i < n; i++) bodies[i]->applyTorque(btVector3(0, 0, btScalar(1.0 + 3.0 * (i % 7) / 6.0)));
+		world.stepSimulation(btScalar(1.0 / 60.0), 0);
+	}
+	Booking b;
+	for (auto& j : joints)
+	{
+		if (auto* h = dynamic_cast<btPlasticHingeConstraint*>(j.get()))
+		{
+			b.energy.push_back(h->getAbsorbedEnergy());
+			b.rotation.push_back(h->getCurrentPlasticRotation());
+		}
+		else
+		{
+			auto* c = static_cast<bt6DofElasticPlastic2Constraint*>(j.get());
+			b.energy.push_back(c->getAbsorbedEnergy());
+			b.rotation.push_back(c->getCurrentPlasticRotation());
+		}
+		b.enabled.push_back(j->isEnabled());
+	}
+	for (auto& j : joints) world.removeConstraint(j.get());
+	for (auto& body : bodies) world.removeRigidBody(body.get());
+	btSetTaskScheduler(btGetSequentialTaskScheduler());
+	return b;
+}
+}  // namespace
+
+TEST(ThreadSafeBooking, SameBookingWithChunksInAnyOrderAndOnTwoThreads)
+{
+	const Booking sequential = run(btGetSequentialTaskScheduler());
+	// the scene yields and breaks: the comparison is not between empty bookings
+	int yielding = 0, broken = 0;
+	for (size_t i = 0; i < sequential.energy.size(); i++)
+	{
+		yielding += sequential.energy[i] > 0;
+		broken += !sequential.enabled[i];
+	}
+	EXPECT_GT(yielding, 600);
+	EXPECT_GT(broken, 100);
+	EXPECT_LT(broken, 1100);
+
+	ReverseChunkScheduler reverse;
+	const Booking reversed = run(&reverse);
+	EXPECT_TRUE(reversed == sequential) << "chunks in reverse order: " << firstDifference(reversed, sequential);
+
+	btITaskScheduler* threads = btCreateDefaultTaskScheduler();
+	ASSERT_NE(threads, nullptr);
+	threads->setNumThreads(2);
+	for (int repeat = 0; repeat < 3; repeat++)
+	{
+		const Booking threaded = run(threads);
+		EXPECT_TRUE(threaded == sequential) << "two threads, run " << repeat << ": " << firstDifference(threaded, sequential);
+	}
+	delete threads;
+}
+
+// The booking of a yielding joint is the work the load did on it: the same physics as the single-threaded solver.
+TEST(ThreadSafeBooking, YieldingHingeBooksTheWorkOfTheLoad)
+{
+	btSetTaskScheduler(btGetSequentialTaskScheduler());
+	btDefaultCollisionConfiguration configuration;
+	btCollisionDispatcher dispatcher(&configuration);
+	btDbvtBroadphase broadphase;
+	btSequentialImpulseConstraintSolverMt solver;
+	btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
+	world.setGravity(btVector3(0, 0, 0));
+	btBoxShape shape(btVector3(0.5, 0.05, 0.05));
+	btVector3 inertia;
+	shape.calculateLocalInertia(1, inertia);
+	btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &shape, inertia);
+	btRigidBody bar(info);
+	bar.setActivationState(DISABLE_DEACTIVATION);
+	world.addRigidBody(&bar, 0, 0);
+	btPlasticHingeConstraint hinge(bar, btVector3(0, 0, 0), btVector3(0, 0, 1));
+	hinge.setPlasticMoment(2.0);
+	world.addConstraint(&hinge);
+	const double torque = 3.0;
+	double rotation = 0;
+	for (int i = 0; i < 30; i++)
+	{
+		const btVector3 x0 = bar.getWorldTransform().getBasis().getColumn(0);
+		bar.applyTorque(btVector3(0, 0, btScalar(torque)));
+		world.stepSimulation(btScalar(1.0 / 60.0), 0);
+		const btVector3 x1 = bar.getWorldTransform().getBasis().getColumn(0);
+		rotation += std::atan2(double(x0.cross(x1).z()), double(x0.dot(x1)));
+	}
+	const double kinetic = 0.5 * inertia.z() * bar.getAngularVelocity().z() * bar.getAngularVelocity().z();
+	// semi-implicit Euler gains (tau - Mp)^2 dt^2 / (2 I) per step over the exact work; the rest must balance
+	const double dt = 1.0 / 60.0, integratorGain = 30 * (torque - 2.0) * (torque - 2.0) * dt * dt / (2 * inertia.z());
+	EXPECT_NEAR(torque * rotation, kinetic + hinge.getAbsorbedEnergy() + integratorGain, 1e-3 * torque * rotation);
+	EXPECT_NEAR(hinge.getAbsorbedEnergy(), 2.0 * rotation, 1e-3 * 2.0 * rotation);
+	world.removeConstraint(&hinge);
+	world.removeRigidBody(&bar);
+}
