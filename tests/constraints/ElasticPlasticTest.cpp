@@ -123,7 +123,8 @@ TYPED_TEST(ElasticPlastic, AboveTheCapPermanentSetIsDisplacementMinusFOverK)
 	const double set = sum / n;
 	// measured: within 10.2 % of F/k for EP2 (1 % of the total displacement), closer for EP
 	EXPECT_NEAR(set, total - maxMoment / k, 0.15 * maxMoment / k);
-	EXPECT_NEAR(rig.c->getAbsorbedEnergy(), maxMoment * rig.c->getCurrentPlasticRotation(), 1e-5 * rig.c->getAbsorbedEnergy());
+	// the booked plastic flow is the permanent set the body keeps
+	EXPECT_NEAR(rig.c->getCurrentPlasticRotation(), set, 0.15 * maxMoment / k);
 }
 
 TYPED_TEST(ElasticPlastic, RigidPlasticCapRespectedInARotatedFrame)
@@ -238,10 +239,10 @@ bt6DofElasticPlastic2Constraint* makeTwoBodyConstraint(btRigidBody& a, btRigidBo
 
 // A moment above the cap about the X axis of a frame that is turned and set off the centre of mass (so the linear
 // rows carry forces and moments too): the joint yields, and the work put in equals the kinetic energy gained plus
-// the plastic work, which equals the cap times the plastic rotation. The forces are read back from the solver's
-// feedback for every way of holding the body. The last step's flow is booked when the next step starts, so the
-// balance adds it (cap times the last step's rotation). What remains is the integrator's own first-order energy
-// error, 1/2 I dw w over the run: 0.7 % here (100 steps of 1 ms, up to 53 rad/s).
+// the plastic work, for every way of holding the body (a joint feedback the user attaches is filled by the solver
+// and not used by the constraint). The booked rotation is the rotation the body made relative to its holder. What
+// remains is the integrator's own first-order energy error, 1/2 I dw w over the run: 0.7 % here (100 steps of 1 ms,
+// up to 53 rad/s).
 TYPED_TEST(ElasticPlastic, YieldingWorkBalancesWithForcesReadBackFromTheSolver)
 {
 	for (Holder holder : {Holder::FixedBodyA, Holder::DynamicBodyA, Holder::StaticBodyB, Holder::UserFeedback, Holder::FeedbackRemoved})
@@ -281,25 +282,35 @@ TYPED_TEST(ElasticPlastic, YieldingWorkBalancesWithForcesReadBackFromTheSolver)
 		w.world.addConstraint(c, true);
 		const btVector3 axis = frame.getBasis().getColumn(0);  // the moving body starts at identity
 		const double torque = 3.0 * cap;
-		double workIn = 0;
+		// the rotation of the body relative to its holder about the joint's axis, from their orientations
+		auto relativeOrientation = [&]() {
+			btQuaternion holder = other ? other->getOrientation() : btQuaternion::getIdentity();
+			return holder.inverse() * body->getOrientation();
+		};
+		const btVector3 axisInHolder = other ? (other->getWorldTransform().getBasis().transpose() * axis) : axis;
+		btQuaternion previous = relativeOrientation();
+		double workIn = 0, rotation = 0;
 		for (int i = 0; i < 100; i++)
 		{
 			body->applyTorque(axis * btScalar(torque));
 			w.world.stepSimulation(btScalar(kDt), 0);
 			// the orientation advanced with the velocity after the step
 			workIn += torque * double(body->getAngularVelocity().dot(axis)) * kDt;
+			const btQuaternion now = relativeOrientation();
+			const btQuaternion increment = now * previous.inverse();  // in the holder's frame
+			rotation += std::fabs(double(increment.getAngle() * increment.getAxis().dot(axisInHolder)));
+			previous = now;
 		}
 		double kinetic = w.kineticEnergy(body);
 		if (other) kinetic += w.kineticEnergy(other);
 		const double absorbed = c->getAbsorbedEnergy();
-		double lastStepRotation = std::fabs(double(body->getAngularVelocity().dot(axis))) * kDt;
-		if (other) lastStepRotation = std::fabs(double((body->getAngularVelocity() - other->getAngularVelocity()).dot(axis))) * kDt;
 		const char* names[] = {"fixed body A", "dynamic body A", "static body B", "user feedback", "feedback removed"};
 		SCOPED_TRACE(names[int(holder)]);
 		ASSERT_GT(c->getCurrentPlasticRotation(), 0.1) << "the DOF should have yielded";
 		EXPECT_EQ(c->getCurrentPlasticStrain(), 0.0) << "the linear DOFs hold";
-		EXPECT_NEAR(absorbed, cap * c->getCurrentPlasticRotation(), 1e-5 * absorbed);
-		EXPECT_NEAR(workIn, kinetic + absorbed + cap * lastStepRotation, 0.01 * workIn);
+		EXPECT_NEAR(c->getCurrentPlasticRotation(), rotation, 2e-3 * rotation);
+		EXPECT_NEAR(absorbed, cap * rotation, 2e-3 * cap * rotation);
+		EXPECT_NEAR(workIn, kinetic + absorbed, 0.01 * workIn);
 		if (holder == Holder::UserFeedback)
 		{
 			EXPECT_EQ(c->getJointFeedback(), &userFeedback);

@@ -77,9 +77,9 @@ TEST_P(PlasticHingeStep, AbovePlasticMomentTransmitsAtMostMpAndAbsorbsMpTimesRot
 	EXPECT_LE(maxMoment, mp * (1 + 1e-5)) << "joint feedback moment exceeds Mp";
 	EXPECT_GT(maxMoment, mp * 0.999) << "the hinge should be at its cap while yielding";
 	ASSERT_GT(rotation, 0.1);
-	// the last step's rotation is booked at the next step: compare up to it
-	EXPECT_NEAR(lever.hinge->getCurrentPlasticRotation(), rotation, 0.01 * rotation + std::fabs(lever.bar->getAngularVelocity().y()) * dt);
-	EXPECT_NEAR(lever.hinge->getAbsorbedEnergy(), mp * lever.hinge->getCurrentPlasticRotation(), 1e-6 * mp * rotation);
+	// booked in the step it happened: the rotation measured from the hinge angle, and Mp times it
+	EXPECT_NEAR(lever.hinge->getCurrentPlasticRotation(), rotation, 1e-3 * rotation);
+	EXPECT_NEAR(lever.hinge->getAbsorbedEnergy(), mp * rotation, 1e-3 * mp * rotation);
 }
 
 TEST_P(PlasticHingeStep, PermanentSetNoSpringBack)
@@ -89,7 +89,6 @@ TEST_P(PlasticHingeStep, PermanentSetNoSpringBack)
 	const int loading = static_cast<int>(std::ceil(0.3 / dt));
 	for (int i = 0; i < loading; i++) lever.step(dt, 6.0);
 	lever.bar->setAngularVelocity(btVector3(0, 0, 0));
-	lever.step(dt, 0);  // books the last loading step
 	const double set = lever.angle();
 	ASSERT_GT(std::fabs(set), 0.05);
 	const int unloaded = static_cast<int>(std::ceil(1.0 / dt));
