@@ -20,7 +20,7 @@ set(BULLET_UPSTREAM_TOPDIR "pybullet-3.2.7")
 # first group; the demo app (OpenGL / OSMesa) needs the second (BulletSoftBody
 # because the browser's OpenGLGuiHelper draws soft bodies; three headers that
 # OpenGLExampleBrowser.cpp includes). Both are always unpacked, since patches
-# 0006-0008 change files of the second group; only what a target needs is built.
+# 0008-0010 change files of the second group; only what a target needs is built.
 set(BULLET_UPSTREAM_LIBRARY_PATHS
 	LICENSE.txt
 	src/LinearMath

@@ -1,6 +1,6 @@
 # The upstream demo side the project's ExampleBrowser app needs, built from the patched tree:
 # Bullet3Common, BulletSoftBody (the browser's OpenGLGuiHelper draws soft bodies), glad,
-# OpenGLWindow (X11 window loaded at run time, plus the OSMesa window of patch 0008), Gwen
+# OpenGLWindow (X11 window loaded at run time, plus the OSMesa window of patch 0010), Gwen
 # and the browser library. Only the app and the render tests link these; nothing else does.
 
 find_path(OSMESA_INCLUDE_DIR GL/osmesa.h)
@@ -38,7 +38,7 @@ add_library(OpenGLWindow STATIC ${opengl_window_sources}
 	"${BP_EXAMPLES}/ThirdPartyLibs/glad/glx.c"
 	"${BP_EXAMPLES}/ThirdPartyLibs/stb_image/stb_image_write.cpp")
 bp_upstream_demo_target(OpenGLWindow)
-# osmesa.h is only included by OSMesaGLContext.cpp (patch 0008)
+# osmesa.h is only included by OSMesaGLContext.cpp (patch 0010)
 target_include_directories(OpenGLWindow PRIVATE "${OSMESA_INCLUDE_DIR}")
 target_link_libraries(OpenGLWindow PUBLIC Bullet3Common ${OSMESA_LIBRARY} ${CMAKE_DL_LIBS})
 # glad's gl.c and glx.c, fontstash and the font tables share file-local names: no unity build

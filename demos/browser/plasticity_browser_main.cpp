@@ -1,6 +1,6 @@
 // The project's ExampleBrowser app: upstream's OpenGLExampleBrowser with the plasticity examples.
 // Headless: --window_backend=osmesa --start_demo_name=Charpy --png_file=PREFIX --max_frames=N
-// (flags of patch 0009; see README). The loop is upstream's main.cpp without the file importers.
+// (flags of patch 0011; see README). The loop is upstream's main.cpp without the file importers.
 #include <cstdio>
 
 #include "OpenGLExampleBrowser.h"

@@ -12,7 +12,7 @@
 
 namespace
 {
-const int kWindowTypeOSMesa = 3;  // SimpleOpenGL3App window type of patch 0008
+const int kWindowTypeOSMesa = 3;  // SimpleOpenGL3App window type of patch 0010
 }
 
 CharpyRenderer::CharpyRenderer(int width_px, int height_px)

@@ -1,4 +1,4 @@
-// Off-screen renderer of a Charpy scene: an OSMesa SimpleOpenGL3App (window type 3 of patch 0008)
+// Off-screen renderer of a Charpy scene: an OSMesa SimpleOpenGL3App (window type 3 of patch 0010)
 // with the browser's OpenGLGuiHelper. Shared by charpy_figures and the render tests. It reads the
 // scene's world and never changes it.
 #pragma once

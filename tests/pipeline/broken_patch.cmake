@@ -1,7 +1,7 @@
 # A patch whose context no longer matches stops the preparation with a message naming the patch and hunk.
 file(REMOVE_RECURSE "${WORK}")
 file(COPY "${PROJECT_DIR}/patches" DESTINATION "${WORK}")
-set(victim "${WORK}/patches/0002-btGeneric6DofSpring2Constraint-optional-maximum-force-per-row.patch")
+set(victim "${WORK}/patches/0004-btGeneric6DofSpring2Constraint-optional-maximum-force-per-row.patch")
 file(READ "${victim}" text)
 string(REPLACE " 	bool m_springDampingLimited;\n 	btScalar m_equilibriumPoint;" " 	bool m_springDampingLimited;\n 	btScalar m_equilibriumPointChanged;" text "${text}")
 file(WRITE "${victim}" "${text}")
@@ -11,7 +11,7 @@ execute_process(COMMAND ${CMAKE_COMMAND} -DPROJECT_DIR=${PROJECT_DIR} -DDEST=${W
 if(rc EQUAL 0)
 	message(FATAL_ERROR "a broken patch was applied without error:\n${out}")
 endif()
-if(NOT out MATCHES "Patch 0002-btGeneric6DofSpring2Constraint-optional-maximum-force-per-row.patch does not apply")
+if(NOT out MATCHES "Patch 0004-btGeneric6DofSpring2Constraint-optional-maximum-force-per-row.patch does not apply")
 	message(FATAL_ERROR "the message does not name the patch:\n${out}")
 endif()
 if(NOT out MATCHES "Hunk #[0-9]+ FAILED")

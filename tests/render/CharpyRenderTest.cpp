@@ -1,4 +1,4 @@
-// Headless rendering through the OSMesa window (patch 0008): the Charpy scene is drawn where it is,
+// Headless rendering through the OSMesa window (patch 0010): the Charpy scene is drawn where it is,
 // frames change where the specimen moved, and llvmpipe reproduces a reference frame.
 #include <gtest/gtest.h>
 

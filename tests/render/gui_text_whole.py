@@ -1,7 +1,7 @@
 """GUI text renders whole under OSMesa: the first glyph of a Gwen label keeps its lower-left half.
 
 Runs the browser with its GUI at 1024x768 for two frames and looks at the menu bar, whose layout is
-fixed: "File" starts at x = 13 px, "View" at x = 46 px. Before patch 0007 the first quad of every
+fixed: "File" starts at x = 13 px, "View" at x = 46 px. Before patch 0009 the first quad of every
 text batch lost its lower-left triangle (GLInstancingRenderer::drawPoints wrote point colours into
 GLPrimitiveRenderer's index buffer), so the F's stem and the V's left stroke were missing.
 
