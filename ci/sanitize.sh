@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The test suite under AddressSanitizer + UndefinedBehaviorSanitizer (build-asan/, Debug with -O1).
-# The OSMesa/GL side is left out (Mesa itself is not instrumented). About 4 minutes on 2 cores.
+# The OSMesa/GL side is left out (Mesa itself is not instrumented). Part of ci/test.sh; about 6 minutes on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/deps.sh
