@@ -1,5 +1,5 @@
-# Runs the upstream-only scene built with and without the patches; the printed states
-# (hexadecimal floats) must be identical.
+# Runs an upstream-only program built with and without the patches; what it prints (hexadecimal float
+# states, or the constraints of every island) must be identical. -DMIN_LINES: the least it must print.
 foreach(variant PATCHED UNPATCHED)
 	execute_process(COMMAND "${${variant}}" RESULT_VARIABLE rc OUTPUT_VARIABLE out_${variant} ERROR_VARIABLE err)
 	if(NOT rc EQUAL 0)
@@ -8,7 +8,10 @@ foreach(variant PATCHED UNPATCHED)
 endforeach()
 string(REGEX MATCHALL "\n" lines "${out_PATCHED}")
 list(LENGTH lines n)
-if(n LESS 36 OR out_PATCHED MATCHES "nan|inf")
+if(NOT DEFINED MIN_LINES)
+	set(MIN_LINES 36)
+endif()
+if(n LESS MIN_LINES OR out_PATCHED MATCHES "nan|inf")
 	message(FATAL_ERROR "the scene printed ${n} lines or a NaN/inf; expected finite states:\n${out_PATCHED}")
 endif()
 if(NOT out_PATCHED STREQUAL out_UNPATCHED)
@@ -20,4 +23,4 @@ if(NOT out_PATCHED STREQUAL out_UNPATCHED)
 		endif()
 	endforeach()
 endif()
-message(STATUS "identical: ${n} body states over 4 s at 240 Hz")
+message(STATUS "identical: ${n} lines")
