@@ -99,13 +99,11 @@ btTypedConstraint* makeJoint(JointKind kind, btRigidBody& anchor, btRigidBody& b
 }
 }  // namespace
 
-JointScene::JointScene(JointKind kind, int joints)
+JointScene::JointScene(JointKind kind, int joints, bool splitIslands)
 {
 	m_world = std::make_unique<btDiscreteDynamicsWorld>(&m_dispatcher, &m_broadphase, &m_solver, &m_configuration);
 	m_world->setGravity(btVector3(0, btScalar(-9.81), 0));
-	// One solver call for all joints: with Bullet's default island splitting, N one-joint islands cost
-	// O(N^2) per step in upstream code (10000 upstream locked hinges: 222 ms instead of 9 ms per step).
-	m_world->getSimulationIslandManager()->setSplitIslands(false);
+	m_world->getSimulationIslandManager()->setSplitIslands(splitIslands);
 	btRigidBody::btRigidBodyConstructionInfo anchorInfo(0, nullptr, &m_shape);
 	m_anchor = std::make_unique<btRigidBody>(anchorInfo);
 	m_world->addRigidBody(m_anchor.get(), 0, 0);
@@ -156,4 +154,66 @@ size_t JointScene::constraintSize(JointKind kind)
 		default:
 			return 0;
 	}
+}
+
+BreakingScene::BreakingScene(int members, bool plastic)
+{
+	m_world = std::make_unique<btDiscreteDynamicsWorld>(&m_dispatcher, &m_broadphase, &m_solver, &m_configuration);
+	m_world->setGravity(btVector3(0, btScalar(-9.81), 0));
+	btRigidBody::btRigidBodyConstructionInfo anchorInfo(0, nullptr, &m_shape);
+	m_anchor = std::make_unique<btRigidBody>(anchorInfo);
+	m_world->addRigidBody(m_anchor.get(), 0, 0);
+	btVector3 inertia;
+	m_shape.calculateLocalInertia(kMass_kg, inertia);
+	const btVector3 axis(1, 0, 0);
+	for (int m = 0; m < members; m++)
+	{
+		btRigidBody* previous = m_anchor.get();
+		for (int k = 0; k < 4; k++)
+		{
+			// a horizontal cantilever along +Z; joint k at z = 2 kArm_m k, box k centred kArm_m further
+			const btVector3 pivot(btScalar(m), 0, 2 * kArm_m * k);
+			btRigidBody::btRigidBodyConstructionInfo info(kMass_kg, nullptr, &m_shape, inertia);
+			info.m_startWorldTransform = at(pivot + btVector3(0, 0, kArm_m));
+			m_bodies.push_back(std::make_unique<btRigidBody>(info));
+			m_world->addRigidBody(m_bodies.back().get(), 0, 0);
+			btRigidBody* box = m_bodies.back().get();
+			const btVector3 inPrevious = pivot - previous->getCenterOfMassPosition();
+			const btVector3 inBox(0, 0, -kArm_m);
+			// the root carries the moment of the whole member: it breaks first, then the pieces fall on their own
+			const btScalar loadMoment = kMass_kg * btScalar(9.81) * (4 - k) * (4 - k) * 2 * kArm_m / 2;
+#ifndef BP_UPSTREAM_ONLY
+			if (plastic)
+			{
+				auto* h = new btPlasticHingeConstraint(*previous, *box, inPrevious, inBox, axis, axis);
+				h->setPlasticMoment(btScalar(0.8) * loadMoment);
+				h->setMaxPlasticRotation(btScalar(0.2 + 0.05 * (m % 5)));
+				m_joints.emplace_back(h);
+			}
+			else
+#endif
+			{
+				auto* h = new btHingeConstraint(*previous, *box, inPrevious, inBox, axis, axis);
+				h->setLimit(0, 0);
+				h->setBreakingImpulseThreshold(btScalar(0.8 + 0.05 * (m % 5)) * loadMoment * JointScene::kStep_s);
+				m_joints.emplace_back(h);
+			}
+			m_world->addConstraint(m_joints.back().get(), true);
+			previous = box;
+		}
+	}
+}
+
+BreakingScene::~BreakingScene()
+{
+	for (auto& j : m_joints) m_world->removeConstraint(j.get());
+	for (auto& b : m_bodies) m_world->removeRigidBody(b.get());
+	m_world->removeRigidBody(m_anchor.get());
+}
+
+int BreakingScene::enabledJoints() const
+{
+	int n = 0;
+	for (auto& j : m_joints) n += j->isEnabled() ? 1 : 0;
+	return n;
 }

@@ -24,12 +24,36 @@ enum class JointKind
 class JointScene
 {
 public:
-	JointScene(JointKind kind, int joints);
+	// splitIslands: Bullet's default (each one-joint island solved on its own) or one solver call for all
+	JointScene(JointKind kind, int joints, bool splitIslands = false);
 	~JointScene();
 	void step() { m_world->stepSimulation(kStep_s, 0, kStep_s); }
 	static constexpr btScalar kStep_s = btScalar(1.0 / 60);
 	// sizeof the constraint class of a kind, bytes
 	static size_t constraintSize(JointKind kind);
+
+private:
+	btDefaultCollisionConfiguration m_configuration;
+	btCollisionDispatcher m_dispatcher{&m_configuration};
+	btDbvtBroadphase m_broadphase;
+	btSequentialImpulseConstraintSolver m_solver;
+	std::unique_ptr<btDiscreteDynamicsWorld> m_world;
+	btBoxShape m_shape{btVector3(0.05, 0.05, 0.2)};
+	std::unique_ptr<btRigidBody> m_anchor;
+	std::vector<std::unique_ptr<btRigidBody>> m_bodies;
+	std::vector<std::unique_ptr<btTypedConstraint>> m_joints;
+};
+
+// Structures that break into pieces: N members, each a chain of four boxes hung from a static anchor by joints that
+// break under their own weight within the first second (upstream hinges with a breaking impulse threshold, or plastic
+// hinges with a small maximum plastic rotation), so the islands multiply while the scene runs. Island splitting on.
+class BreakingScene
+{
+public:
+	BreakingScene(int members, bool plastic);
+	~BreakingScene();
+	void step() { m_world->stepSimulation(JointScene::kStep_s, 0, JointScene::kStep_s); }
+	int enabledJoints() const;
 
 private:
 	btDefaultCollisionConfiguration m_configuration;
