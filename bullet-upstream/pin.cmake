@@ -1,5 +1,5 @@
 # The pinned upstream Bullet this patch series is made against.
-# Read by the top-level CMakeLists.txt (cmake/BulletUpstream.cmake); edit only here.
+# Read by the top-level CMakeLists.txt and cmake/PrepareBulletTree.cmake; edit only here.
 #
 # pybullet 3.2.7 is Bullet master just after the 3.25 tag (BT_BULLET_VERSION 326).
 # Its src/ is byte-identical to bulletphysics/bullet3 master 6c888f4 apart from the

@@ -101,7 +101,13 @@ btTypedConstraint* makeJoint(JointKind kind, btRigidBody& anchor, btRigidBody& b
 
 JointScene::JointScene(JointKind kind, int joints, bool splitIslands)
 {
+#ifdef BP_THREADS
+	// islands in parallel on a pool of solvers; one large island (no splitting) on the multithreaded solver
+	m_solverPool = std::make_unique<btConstraintSolverPoolMt>(BT_MAX_THREAD_COUNT);
+	m_world = std::make_unique<btDiscreteDynamicsWorldMt>(&m_dispatcher, &m_broadphase, m_solverPool.get(), &m_solverMt, &m_configuration);
+#else
 	m_world = std::make_unique<btDiscreteDynamicsWorld>(&m_dispatcher, &m_broadphase, &m_solver, &m_configuration);
+#endif
 	m_world->setGravity(btVector3(0, btScalar(-9.81), 0));
 	m_world->getSimulationIslandManager()->setSplitIslands(splitIslands);
 	btRigidBody::btRigidBodyConstructionInfo anchorInfo(0, nullptr, &m_shape);

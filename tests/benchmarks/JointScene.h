@@ -7,6 +7,10 @@
 #include <vector>
 
 #include "btBulletDynamicsCommon.h"
+#ifdef BP_THREADS  // the BT_THREADSAFE build: btDiscreteDynamicsWorldMt with a solver pool and the Mt solver
+#include "BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolverMt.h"
+#include "BulletDynamics/Dynamics/btDiscreteDynamicsWorldMt.h"
+#endif
 
 enum class JointKind
 {
@@ -37,6 +41,10 @@ private:
 	btCollisionDispatcher m_dispatcher{&m_configuration};
 	btDbvtBroadphase m_broadphase;
 	btSequentialImpulseConstraintSolver m_solver;
+#ifdef BP_THREADS
+	btSequentialImpulseConstraintSolverMt m_solverMt;
+	std::unique_ptr<btConstraintSolverPoolMt> m_solverPool;
+#endif
 	std::unique_ptr<btDiscreteDynamicsWorld> m_world;
 	btBoxShape m_shape{btVector3(0.05, 0.05, 0.2)};
 	std::unique_ptr<btRigidBody> m_anchor;
