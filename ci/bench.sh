@@ -1,16 +1,17 @@
 #!/usr/bin/env bash
-# Benchmarks (Google Benchmark): builds joint_benchmarks and joint_benchmarks_unpatched, runs them one
-# after the other and writes report/BENCHMARKS.md (+ the raw JSON in report/benchmarks/).
+# Benchmarks (Google Benchmark): builds joint_benchmarks, joint_benchmarks_unpatched and thread_benchmarks
+# (BT_THREADSAFE), runs them one after the other and writes report/BENCHMARKS.md (+ the raw JSON in
+# report/benchmarks/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/deps.sh
 build="${BUILD_DIR:-build}"
 bash ci/configure.sh -DBP_BUILD_TESTS=ON -DBP_BUILD_BENCHMARKS=ON
-cmake --build "$build" --target joint_benchmarks joint_benchmarks_unpatched
+cmake --build "$build" --target joint_benchmarks joint_benchmarks_unpatched thread_benchmarks
 mkdir -p report/benchmarks
-for b in joint_benchmarks joint_benchmarks_unpatched; do
+for b in joint_benchmarks joint_benchmarks_unpatched thread_benchmarks; do
 	"$build/bin/$b" --benchmark_out="report/benchmarks/$b.json.tmp" --benchmark_out_format=json --benchmark_repetitions=1 "$@"
 	mv "report/benchmarks/$b.json.tmp" "report/benchmarks/$b.json"
 done
 python3 ci/bench_report.py report/benchmarks/joint_benchmarks.json report/benchmarks/joint_benchmarks_unpatched.json \
-	report/BENCHMARKS.md "bash ci/bench.sh $*"
+	report/BENCHMARKS.md "bash ci/bench.sh $*" report/benchmarks/thread_benchmarks.json

@@ -2,7 +2,7 @@
 """report/BENCHMARKS.md from the Google Benchmark JSON of joint_benchmarks (patched) and
 joint_benchmarks_unpatched (the upstream joints against an unpatched BulletDynamics).
 
-  ci/bench_report.py PATCHED.json UNPATCHED.json OUT.md COMMAND
+  ci/bench_report.py PATCHED.json UNPATCHED.json OUT.md COMMAND [THREADS.json]
 """
 import json
 import os
@@ -81,7 +81,7 @@ def island_section(p, u):
     bp, bu = p.get(("upstream_members", 1000)), u.get(("upstream_members", 1000))
     pp = p.get(("plastic_members", 1000))
     if bp and bu:
-        per_step = lambda b: b["us_per_step"] / 1000.0  # noqa: E731
+        per_step = lambda b: b["s_per_step"] * 1000.0  # noqa: E731
         lines += [
             "",
             "Breaking structures (1000 members of four boxes hung from an anchor, breaking under their own weight",
@@ -96,7 +96,36 @@ def island_section(p, u):
     return lines
 
 
-def main(patched_json, unpatched_json, out_md, command):
+def thread_section(threads_json):
+    """btDiscreteDynamicsWorldMt on 1 and 2 threads (BT_THREADSAFE build)."""
+    with open(threads_json) as f:
+        data = json.load(f)
+    rows = {}
+    for b in data["benchmarks"]:
+        if b.get("run_type", "iteration") != "iteration":
+            continue
+        parts = b["name"].split("/")
+        rows[(parts[1], int(parts[2]), int(parts[3]))] = us(b) / 1000.0
+    lines = [
+        "",
+        "## Two threads (btDiscreteDynamicsWorldMt, BT_THREADSAFE build)",
+        "",
+        "The same scenes on `btDiscreteDynamicsWorldMt` with upstream's default task scheduler: islands on a pool",
+        "of solvers (splitting on) or one island on `btSequentialImpulseConstraintSolverMt` (off). The booking is",
+        "the single-threaded one bit for bit (`tests/threads`). Wall time per step:",
+        "",
+        "| scene | N | 1 thread [ms] | 2 threads [ms] | speedup |",
+        "|---|---|---|---|---|",
+    ]
+    for (kind, n, t), one in sorted(rows.items()):
+        if t != 1:
+            continue
+        two = rows.get((kind, n, 2))
+        lines.append(f"| {kind} | {n} | {one:.2f} | {two:.2f} | {one / two:.2f} |" if two else f"| {kind} | {n} | {one:.2f} | | |")
+    return lines
+
+
+def main(patched_json, unpatched_json, out_md, command, threads_json=None):
     p, context = load(patched_json)
     u, _ = load(unpatched_json)
 
@@ -170,6 +199,8 @@ def main(patched_json, unpatched_json, out_md, command):
             "(cache, broadphase updates), not in the plastic bookkeeping; idle joints grow linearly.",
         ]
     lines += island_section(p, u)
+    if threads_json:
+        lines += thread_section(threads_json)
     lines += [
         "",
         "Scene memory per joint: every byte Bullet allocated (btAlignedAlloc) while building the scene and taking",
@@ -196,6 +227,6 @@ def main(patched_json, unpatched_json, out_md, command):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 5:
+    if len(sys.argv) not in (5, 6):
         raise SystemExit(__doc__)
     main(*sys.argv[1:])

@@ -444,15 +444,26 @@ void CharpyScene::step()
 	{
 		frame = p.auto_dt_coarse_s;
 	}
-	int substeps = 1;
-	if (p.contact_substep_s > 0 && p.contact_substep_s < frame && nearContact(frame))
+	// Only the part of the frame in or near contact is substepped: the rest of the frame is cut in halves until a
+	// piece reaches no contact within its own length; where even a contact substep reaches one, the step is a
+	// contact substep. The contact test is re-made after every internal step.
+	double remaining = frame;
+	while (remaining > 1e-12 * frame)
 	{
-		substeps = static_cast<int>(std::ceil(frame / p.contact_substep_s - 1e-9));
-	}
-	const double h = frame / substeps;
-	for (int i = 0; i < substeps; i++)
-	{
-		internalStep(h);
+		double piece = remaining;
+		if (p.contact_substep_s > 0)
+		{
+			while (piece > p.contact_substep_s && nearContact(piece))
+			{
+				piece /= 2;
+			}
+			if (piece < p.contact_substep_s)
+			{
+				piece = std::min(remaining, p.contact_substep_s);
+			}
+		}
+		internalStep(piece);
+		remaining -= piece;
 	}
 	m_lastFrameStep_s = frame;
 }

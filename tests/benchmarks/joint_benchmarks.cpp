@@ -55,7 +55,7 @@ void breakingScene(benchmark::State& state, bool plastic)
 	}
 	state.counters["joints"] = 4 * members;
 	state.counters["broken_joints"] = broken;
-	state.counters["us_per_step"] = benchmark::Counter(60.0 * state.iterations(), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+	state.counters["s_per_step"] = benchmark::Counter(60.0 * state.iterations(), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 }  // namespace
 

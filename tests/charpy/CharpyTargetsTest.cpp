@@ -142,3 +142,16 @@ TEST(CharpyParameters, InvalidValuesAreRejectedNamingTheParameter)
 		EXPECT_NE(text.find("dt:"), std::string::npos) << text;
 	}
 }
+
+TEST(CharpyTargets, SixtyHertzFramesCostNoMoreInternalStepsThanMillisecondFrames)
+{
+	// only the part of a frame in or near contact is substepped, so a 1/60 s frame costs what 1 ms frames cost
+	for (CharpyMethod m : {CharpyMethod::HingeMotor, CharpyMethod::PlasticHinge, CharpyMethod::ElasticPlastic, CharpyMethod::ElasticPlastic2})
+	{
+		const CharpyResult ms = run(m, 1e-3);
+		const CharpyResult game = run(m, 1.0 / 60.0);
+		EXPECT_LE(game.internal_steps, 3 * ms.internal_steps / 2) << game.method << ": " << game.internal_steps << " vs " << ms.internal_steps;
+		EXPECT_LT(std::fabs(game.error_pct), 5.0) << game.method;
+		EXPECT_TRUE(game.passed_anvils && !game.tunnelled) << game.method;
+	}
+}
