@@ -91,6 +91,12 @@ struct Scene
 		bodies.push_back(std::make_unique<btRigidBody>(info));
 		world.addRigidBody(bodies.back().get());
 	}
+	~Scene()
+	{
+		// the world is destroyed after the members declared below it: leave it empty first
+		for (auto& j : joints) world.removeConstraint(j.get());
+		for (auto& b : bodies) world.removeRigidBody(b.get());
+	}
 };
 }  // namespace
 
