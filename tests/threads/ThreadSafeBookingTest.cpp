@@ -75,21 +75,33 @@ std::string firstDifference(const Booking& a, const Booking& b)
 	return "sizes differ";
 }
 
+// A world without gravity on the multithreaded solver, and the bar shape both tests use.
+struct MtWorld
+{
+	btDefaultCollisionConfiguration configuration;
+	btCollisionDispatcher dispatcher{&configuration};
+	btDbvtBroadphase broadphase;
+	btSequentialImpulseConstraintSolverMt solver;
+	btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+	btBoxShape shape{btVector3(0.5, 0.05, 0.05)};
+	btVector3 inertia;
+	MtWorld()
+	{
+		world.setGravity(btVector3(0, 0, 0));
+		shape.calculateLocalInertia(1, inertia);
+	}
+};
+
 // 1200 bars, each held to the world by a plastic hinge (6 rows) or an elastic-plastic2 joint (6 rows), under moments
 // from 0.5 to 2 times their cap, in one group of 7200 rows (18 write-back chunks, some of them splitting a joint).
 Booking run(btITaskScheduler* scheduler)
 {
 	btSetTaskScheduler(scheduler);
-	btDefaultCollisionConfiguration configuration;
-	btCollisionDispatcher dispatcher(&configuration);
-	btDbvtBroadphase broadphase;
-	btSequentialImpulseConstraintSolverMt solver;
-	btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
-	world.setGravity(btVector3(0, 0, 0));
+	MtWorld mt;
+	btDiscreteDynamicsWorld& world = mt.world;
 	world.getSimulationIslandManager()->setSplitIslands(false);
-	btBoxShape shape(btVector3(0.5, 0.05, 0.05));
-	btVector3 inertia;
-	shape.calculateLocalInertia(1, inertia);
+	btBoxShape& shape = mt.shape;
+	const btVector3& inertia = mt.inertia;
 	const int n = 1200;
 	std::vector<std::unique_ptr<btRigidBody>> bodies;
 	std::vector<std::unique_ptr<btTypedConstraint>> joints;
@@ -181,16 +193,10 @@ TEST(ThreadSafeBooking, SameBookingWithChunksInAnyOrderAndOnTwoThreads)
 TEST(ThreadSafeBooking, YieldingHingeBooksTheWorkOfTheLoad)
 {
 	btSetTaskScheduler(btGetSequentialTaskScheduler());
-	btDefaultCollisionConfiguration configuration;
-	btCollisionDispatcher dispatcher(&configuration);
-	btDbvtBroadphase broadphase;
-	btSequentialImpulseConstraintSolverMt solver;
-	btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
-	world.setGravity(btVector3(0, 0, 0));
-	btBoxShape shape(btVector3(0.5, 0.05, 0.05));
-	btVector3 inertia;
-	shape.calculateLocalInertia(1, inertia);
-	btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &shape, inertia);
+	MtWorld mt;
+	btDiscreteDynamicsWorld& world = mt.world;
+	const btVector3& inertia = mt.inertia;
+	btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &mt.shape, inertia);
 	btRigidBody bar(info);
 	bar.setActivationState(DISABLE_DEACTIVATION);
 	world.addRigidBody(&bar, 0, 0);
