@@ -57,6 +57,32 @@ DOUBLE_CASES = {
     "double-dt16.7ms": ("1/60 s, double precision", ["--dt=0.0166667"]),
 }
 SYMBOLS = {"stable": "✓", "energy-gain": "↑E", "nan": "NaN", "blow-up": "✗", "tunnelling": "⇢", "came-apart": "⊘", "": "?"}
+ACCURACY_SYMBOLS = {"did-not-pass": "⊥", "over-the-top": "⊤", "penetrated": "◐"}
+CONVERGED_TOLERANCE = 0.05  # a stable run's loss more than 5 % from the converged (default) run of its method
+
+
+def reference_case(case):
+    """The converged run a case is compared with: the default case in its precision."""
+    return "double" if case in DOUBLE_CASES else "default"
+
+
+def accuracy(row, by_key):
+    """(symbols, reason) of a stable run's accuracy; ('', '') when accurate or not stable."""
+    if row.get("failure") or row.get("verdict") != "stable":
+        return "", ""
+    marks, reasons = "", []
+    acc = row.get("accuracy", "")
+    if acc in ACCURACY_SYMBOLS:
+        marks += ACCURACY_SYMBOLS[acc]
+        reasons.append(f"{acc}: {row.get('accuracy_reason', '')}")
+    ref = by_key.get(f"{reference_case(row['case'])}/{row['method']}")
+    if ref and not ref.get("failure") and ref is not row:
+        loss, converged = float(row["energy_loss_J"]), float(ref["energy_loss_J"])
+        if converged > 0 and abs(loss - converged) > CONVERGED_TOLERANCE * converged:
+            marks += "≠"
+            reasons.append(f"loss {loss:.1f} J is {100 * (loss - converged) / converged:+.0f} % off the converged "
+                           f"{converged:.1f} J of `{ref['key']}`")
+    return marks, "; ".join(reasons)
 
 
 def configurations(case_names, double_runner):
@@ -86,7 +112,10 @@ def write_markdown(rows, case_names, path, command):
         "⇢ tunnelling (a rigid specimen passed the anvils, or the hammer swung through losing < 5 % of Mp*theta_pass) ·",
         "⊘ came apart (methods 6-8: the unbroken specimen passed the anvils bent less than half of theta_pass end",
         "to end, with plastic work less than half of the energy lost: its joints let go in the solver).",
-        "Cells show the symbol and the energy loss in J.",
+        "Accuracy of a stable run, beside its symbol: ⊥ did not pass the anvils · ⊤ went over the anvils, not",
+        "through the gap · ◐ a contact penetrated more than 10 % of the specimen width · ≠ the loss is more than",
+        "5 % off the converged run of the same method (the default case, in the same precision).",
+        "Cells show the symbols and the energy loss in J.",
         "",
         "| case | " + " | ".join(METHODS) + " |",
         "|---|" + "---|" * len(METHODS),
@@ -102,7 +131,8 @@ def write_markdown(rows, case_names, path, command):
                 cells.append("run failed")
             else:
                 loss = float(r["energy_loss_J"])
-                cells.append(f"{SYMBOLS.get(r.get('verdict', ''), '?')} {loss:.0f}")
+                marks, _ = accuracy(r, by_key)
+                cells.append(f"{SYMBOLS.get(r.get('verdict', ''), '?')}{marks} {loss:.0f}")
         lines.append(f"| {case}: {what} | " + " | ".join(cells) + " |")
     bad = [r for r in rows if r["method"] in NEW_METHODS and r.get("verdict") != "stable"]
     lines += ["", "## Cells where a new constraint (methods 6-8) is not stable", ""]
@@ -120,12 +150,20 @@ def write_markdown(rows, case_names, path, command):
                       "since they book only what they did at their cap."]
     else:
         lines.append("None.")
+    inaccurate = []
+    for r in rows:
+        if r["method"] not in METHODS[4:]:
+            continue
+        marks, reason = accuracy(r, by_key)
+        if marks:
+            inaccurate.append(f"- `{r['key']}`: {reason}")
+    lines += ["", "## Stable but not accurate (methods 5-8)", ""]
+    lines += inaccurate or ["None."]
     lines += ["", "## Energy bookkeeping of the new constraints", "",
               "Cells (methods 6-8) where the plastic work they report disagrees with the energy balance: more",
               "than 105 % of the energy lost, or none although the specimen passed the anvils. The joints book only",
-              "what they did at their cap (the plastic hinge from its limit row's impulse, the elastic-plastic",
-              "classes from the forces read back from the solver's joint feedback), so where they book more than",
-              "the loss the solver has not converged (compare `--iterations=100`).", ""]
+              "the work their capped rows did in each solved step, so where they book more than the loss the solver",
+              "has not converged (compare `--iterations=100`).", ""]
     book = []
     for r in rows:
         if r["method"] not in NEW_METHODS or r.get("failure"):
@@ -162,7 +200,7 @@ def main(argv=None):
         parser.error("--cases: the double-precision cases need --runner-double=PATH")
     todo = runner.in_shard(configurations(names, args.runner_double), runner.parse_shard(args.shard))
     csv_path = os.path.join(args.out_dir, "stability.csv")
-    rows = runner.run_all(args.runner, todo, csv_path, args.jobs, first_columns=("key", "case", "method", "verdict", "verdict_reason"))
+    rows = runner.run_all(args.runner, todo, csv_path, args.jobs, first_columns=("key", "case", "method", "verdict", "verdict_reason", "accuracy", "accuracy_reason"))
     bad = write_markdown(rows, names, os.path.join(args.out_dir, "STABILITY.md"), args.command)
     print(f"{len(rows)} cells in {csv_path}; new constraints not stable in {len(bad)} cells")
     return 0

@@ -60,9 +60,11 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	r.hammer_angle_end_rad = scene.hammerAngle_rad();
 	r.broken = scene.broken();
 	r.passed_anvils = scene.passedAnvils();
+	r.over_the_top = scene.overTheTop();
 	// Folded at mid-span into a V, the specimen fits between the anvils only once its halves span less than the gap:
 	// bend >= 2 acos(gap / length). An unbroken specimen that got past them with less bend went through the anvils.
 	r.max_bend_rad = maxBend;
+	r.specimen_width_m = parameters.specimen_width_m;
 	r.min_pass_bend_rad = 2.0 * std::acos(std::min(1.0, parameters.anvil_gap_m / parameters.specimen_length_m));
 	r.tunnelled = r.passed_anvils && !r.broken && maxBend < r.min_pass_bend_rad;
 	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -96,14 +98,17 @@ std::string toJson(const CharpyResult& r)
 		<< ",\"error_pct\":" << number(r.error_pct) << ",\"plastic_rotation_rad\":" << number(r.plastic_rotation_rad)
 		<< ",\"bend_angle_rad\":" << number(r.bend_angle_rad)
 		<< ",\"end_bend_angle_rad\":" << number(r.end_bend_angle_rad) << ",\"impact_speed_m_s\":" << number(r.impact_speed_m_s)
-		<< ",\"broken\":" << flag(r.broken) << ",\"passed_anvils\":" << flag(r.passed_anvils)
+		<< ",\"broken\":" << flag(r.broken) << ",\"passed_anvils\":" << flag(r.passed_anvils) << ",\"over_the_top\":" << flag(r.over_the_top)
 		<< ",\"max_bend_rad\":" << number(r.max_bend_rad) << ",\"tunnelled\":" << flag(r.tunnelled) << ",\"finite\":" << flag(r.finite)
 		<< ",\"max_energy_gain_J\":" << number(r.max_energy_gain_J) << ",\"max_penetration_m\":" << number(r.max_penetration_m)
 		<< ",\"max_speed_m_s\":" << number(r.max_speed_m_s) << ",\"max_distance_m\":" << number(r.max_distance_m)
 		<< ",\"hammer_angle_end_rad\":" << number(r.hammer_angle_end_rad);
 	std::string why;
 	const CharpyVerdict verdict = classifyCharpyRun(r, &why);
-	out << ",\"verdict\":\"" << charpyVerdictName(verdict) << "\",\"verdict_reason\":\"" << why << "\"}";
+	std::string accuracyWhy;
+	const CharpyAccuracy accuracy = classifyCharpyAccuracy(r, &accuracyWhy);
+	out << ",\"verdict\":\"" << charpyVerdictName(verdict) << "\",\"verdict_reason\":\"" << why << "\""
+		<< ",\"accuracy\":\"" << charpyAccuracyName(accuracy) << "\",\"accuracy_reason\":\"" << accuracyWhy << "\"}";
 	return out.str();
 }
 

@@ -35,6 +35,8 @@ struct CharpyResult
 	double hammer_angle_end_rad = 0;  // pendulum angle from the impact position at the end (< 0: swung on past it)
 	bool broken = false;
 	bool passed_anvils = false;
+	bool over_the_top = false;  // passed, but a part went over the anvils instead of through the gap
+	double specimen_width_m = 0;
 	double max_bend_rad = 0;        // largest end-to-end bend while the specimen was whole
 	double min_pass_bend_rad = 0;   // the bend below which the unbroken specimen cannot fit between the anvils
 	bool tunnelled = false;   // unbroken, past the anvils with less than min_pass_bend_rad: through penetration

@@ -120,6 +120,13 @@ CharpyScene::CharpyScene(const CharpyParameters& parameters)
 		createWorld();
 		createAnvils();
 		createSpecimen();
+		for (const btRigidBody* anvil : m_anvils)
+		{
+			btVector3 lo, hi;
+			anvil->getAabb(lo, hi);
+			m_anvilTop_m = std::max(m_anvilTop_m, double(hi.y()));
+		}
+		m_partPassed.assign(m_parts.size(), false);
 		createJoints();
 		createHammer();  // throws when the hammer cannot reach the specimen
 	}
@@ -517,6 +524,18 @@ void CharpyScene::trackAfterStep(double h_s)
 		if (body->getInvMass() == 0) continue;
 		m_maxSpeed_m_s = std::max(m_maxSpeed_m_s, double(body->getLinearVelocity().length()));
 		m_maxDistance_m = std::max(m_maxDistance_m, double(body->getCenterOfMassPosition().length()));
+	}
+
+	// through the gap or over the top: where each part is when it gets behind the anvils' front plane
+	for (size_t i = 0; i < m_parts.size(); i++)
+	{
+		btVector3 lo, hi;
+		m_parts[i]->getAabb(lo, hi);
+		if (!m_partPassed[i] && hi.x() < 0)
+		{
+			m_partPassed[i] = true;
+			m_overTheTop = m_overTheTop || lo.y() > m_anvilTop_m;
+		}
 	}
 
 	btDispatcher* dispatcher = m_world->getDispatcher();

@@ -51,6 +51,7 @@ public:
 	double hammerAngle_rad() const;  // pendulum rotation about Z from the impact position
 	bool broken() const;
 	bool passedAnvils() const;       // every part is behind the anvils' front plane (x < 0)
+	bool overTheTop() const { return m_overTheTop; }  // a part got behind the anvils above their top, not through the gap
 	double maxPenetration_m() const { return m_maxPenetration_m; }
 	double maxSpeed_m_s() const { return m_maxSpeed_m_s; }        // fastest dynamic body, any step
 	double maxDistance_m() const { return m_maxDistance_m; }      // farthest dynamic body centre from the origin
@@ -94,6 +95,9 @@ private:
 	double m_maxPenetration_m = 0;
 	double m_maxSpeed_m_s = 0;
 	double m_maxDistance_m = 0;
+	double m_anvilTop_m = 0;           // highest point of the anvils (AABB)
+	std::vector<bool> m_partPassed;    // the part has got behind the anvils' front plane
+	bool m_overTheTop = false;
 	// hinge-motor method only: the motor's work and rotation while at its cap
 	double m_motorWork_j = 0;
 	double m_motorRotation_rad = 0;

@@ -13,6 +13,7 @@ const double kTunnellingLossFraction = 0.05;
 const double kHammerThroughAngle_rad = 0.05;  // about 30 mm of striker travel past the specimen's front face
 const double kCameApartBendFraction = 0.5;    // of theta_pass, end to end
 const double kCameApartWorkFraction = 0.5;    // of the energy lost
+const double kPenetrationWidthFraction = 0.1; // of the specimen's width
 
 std::string format(const char* pattern, double a, double b)
 {
@@ -94,4 +95,57 @@ CharpyVerdict classifyCharpyRun(const CharpyResult& r, std::string* why)
 	}
 	if (why) *why = reason;
 	return verdict;
+}
+
+std::string_view charpyAccuracyName(CharpyAccuracy accuracy)
+{
+	switch (accuracy)
+	{
+		case CharpyAccuracy::Unstable:
+			return "unstable";
+		case CharpyAccuracy::DidNotPass:
+			return "did-not-pass";
+		case CharpyAccuracy::OverTheTop:
+			return "over-the-top";
+		case CharpyAccuracy::Penetrated:
+			return "penetrated";
+		case CharpyAccuracy::Accurate:
+			return "accurate";
+	}
+	return "?";
+}
+
+CharpyAccuracy classifyCharpyAccuracy(const CharpyResult& r, std::string* why)
+{
+	std::string stability;
+	std::string reason;
+	CharpyAccuracy accuracy = CharpyAccuracy::Accurate;
+	const double penetrationLimit_m = kPenetrationWidthFraction * r.specimen_width_m;
+	if (classifyCharpyRun(r, &stability) != CharpyVerdict::Stable)
+	{
+		accuracy = CharpyAccuracy::Unstable;
+		reason = stability;
+	}
+	else if (!r.passed_anvils && !r.broken)
+	{
+		accuracy = CharpyAccuracy::DidNotPass;
+		reason = format("the specimen is still in front of the anvils, bent at most %.3g rad (it needs %.3g rad)", r.max_bend_rad,
+						r.min_pass_bend_rad);
+	}
+	else if (r.over_the_top)
+	{
+		accuracy = CharpyAccuracy::OverTheTop;
+		reason = format("a part got behind the anvils above their top (loss %.4g J, max bend %.3g rad)", r.energy_loss_J, r.max_bend_rad);
+	}
+	else if (r.max_penetration_m > penetrationLimit_m)
+	{
+		accuracy = CharpyAccuracy::Penetrated;
+		reason = format("max penetration %.3g mm > %.3g mm (10 %% of the specimen width)", r.max_penetration_m * 1e3, penetrationLimit_m * 1e3);
+	}
+	else
+	{
+		reason = format("max penetration %.3g mm, max bend %.3g rad", r.max_penetration_m * 1e3, r.max_bend_rad);
+	}
+	if (why) *why = reason;
+	return accuracy;
 }

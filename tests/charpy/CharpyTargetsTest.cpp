@@ -6,6 +6,7 @@
 
 #include "CharpyRun.h"
 #include "CharpySection.h"
+#include "CharpyVerdict.h"
 
 namespace
 {
@@ -153,5 +154,36 @@ TEST(CharpyTargets, SixtyHertzFramesCostNoMoreInternalStepsThanMillisecondFrames
 		EXPECT_LE(game.internal_steps, 3 * ms.internal_steps / 2) << game.method << ": " << game.internal_steps << " vs " << ms.internal_steps;
 		EXPECT_LT(std::fabs(game.error_pct), 5.0) << game.method;
 		EXPECT_TRUE(game.passed_anvils && !game.tunnelled) << game.method;
+	}
+}
+
+TEST(CharpyAccuracy, StableRunsThatAreNotAccurateAreToldApart)
+{
+	CharpyParameters p;
+	std::string why;
+	EXPECT_EQ(charpyAccuracyName(classifyCharpyAccuracy(runCharpy(p), &why)), "accurate") << why;
+	{
+		// the thesis' own step without contact substeps: the specimen is pushed through unbent (-68 %)
+		CharpyParameters q = p;
+		q.contact_substep_s = 0;
+		const CharpyResult r = runCharpy(q);
+		EXPECT_NE(charpyVerdictName(classifyCharpyRun(r)), "stable") << r.energy_loss_J;
+		EXPECT_EQ(charpyAccuracyName(classifyCharpyAccuracy(r)), "unstable");
+	}
+	{
+		// eight parts: the folded specimen leaves over the anvils instead of through the gap (202 J lost)
+		CharpyParameters q = p;
+		q.parts = 8;
+		const CharpyResult r = runCharpy(q);
+		EXPECT_TRUE(r.over_the_top);
+		EXPECT_EQ(charpyAccuracyName(classifyCharpyAccuracy(r, &why)), "over-the-top") << why;
+	}
+	{
+		// friction jams the specimen against the flat striker (issue 14): it never passes
+		CharpyParameters q = p;
+		q.friction = 0.25;
+		const CharpyResult r = runCharpy(q);
+		EXPECT_FALSE(r.passed_anvils);
+		EXPECT_EQ(charpyAccuracyName(classifyCharpyAccuracy(r, &why)), "did-not-pass") << why;
 	}
 }
