@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/deps.sh
-bash ci/configure.sh -DBP_BUILD_TESTS=ON -DBP_BUILD_BROWSER=ON -DBP_BUILD_BENCHMARKS=ON
+bash ci/configure.sh -DBP_BUILD_TESTS=ON -DBP_BUILD_BROWSER=ON -DBP_BUILD_BENCHMARKS=ON -DBP_WARNINGS_AS_ERRORS=ON
 cmake --build "${BUILD_DIR:-build}"
 (cd "${BUILD_DIR:-build}" && ctest --output-on-failure -j"$(nproc)")
 if [[ ${BP_SKIP_SANITIZERS:-0} != 1 ]]; then

@@ -164,6 +164,9 @@ size_t JointScene::constraintSize(JointKind kind)
 
 BreakingScene::BreakingScene(int members, bool plastic)
 {
+#ifdef BP_UPSTREAM_ONLY
+	(void)plastic;  // the unpatched build has upstream hinges only
+#endif
 	m_world = std::make_unique<btDiscreteDynamicsWorld>(&m_dispatcher, &m_broadphase, &m_solver, &m_configuration);
 	m_world->setGravity(btVector3(0, btScalar(-9.81), 0));
 	btRigidBody::btRigidBodyConstructionInfo anchorInfo(0, nullptr, &m_shape);

@@ -121,8 +121,14 @@ TEST(PlasticHingeCore, BreaksInTheStepThatPassesTheLimit)
 		const double now = angleZ(lever.bar);
 		rotation += std::fabs(unwrap(now - previous));
 		previous = now;
-		if (rotation < maxRotation * (1 - 1e-3)) EXPECT_TRUE(lever.hinge->isEnabled()) << "rotation " << rotation;
-		if (rotation > maxRotation * (1 + 1e-3)) EXPECT_FALSE(lever.hinge->isEnabled()) << "rotation " << rotation;
+		if (rotation < maxRotation * (1 - 1e-3))
+		{
+			EXPECT_TRUE(lever.hinge->isEnabled()) << "rotation " << rotation;
+		}
+		if (rotation > maxRotation * (1 + 1e-3))
+		{
+			EXPECT_FALSE(lever.hinge->isEnabled()) << "rotation " << rotation;
+		}
 	}
 	EXPECT_FALSE(lever.hinge->isEnabled());
 }
@@ -465,7 +471,9 @@ TEST(KinematicPartner, DriverSpinsUpAWheelThroughTheSlippingHinge)
 			w.world.stepSimulation(btScalar(dt), 0);
 			const double time = (i + 1) * dt;
 			if (time < 0.9 * catchUp)
+			{
 				EXPECT_NEAR(wheel->getAngularVelocity().y(), mp * time / inertia, 0.01 * omega) << "t " << time;
+			}
 		}
 		const char* what = driverIsA ? "driver is A" : "driver is B";
 		EXPECT_NEAR(wheel->getAngularVelocity().y(), omega, 0.02 * omega) << what << ": caught up";
@@ -590,9 +598,13 @@ TEST(SleepingPartner, DropWeightWakesTheBeamWhichYieldsAndBooksNoMoreThanWasLost
 		EXPECT_LE(scene.booked(), lost) << "booked work is part of the energy lost";
 		const double reboundShare = 0.5 * 500 * rebound * rebound / impact;
 		if (split)
+		{
 			EXPECT_LT(reboundShare, 0.005) << "no rebound from the error correction";
+		}
 		else
+		{
 			EXPECT_LT(reboundShare, 0.10) << "Bullet's velocity bias rebounds a few percent";
+		}
 		std::printf("[ info     ] split position correction %s: rebound %.2f %% of the impact energy, booked %.0f J of %.0f J lost\n",
 					split ? "on " : "off", 100 * reboundShare, scene.booked(), lost);
 	}
