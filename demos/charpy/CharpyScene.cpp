@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "Section.h"
 #include "btBulletDynamicsCommon.h"
 #include "BulletDynamics/ConstraintSolver/btGeneric6DofSpring2Constraint.h"
 
@@ -14,7 +15,6 @@ constexpr double kMargin_m = 0.0005;      // collision margin of the small boxes
 constexpr double kNoseHeight_m = 0.02;    // striker nose along Y
 constexpr double kAnvilDepth_m = 0.04;    // anvils along X, behind the specimen
 constexpr double kStartGap_m = 0.003;     // the hammer nose starts this far in front of the specimen
-constexpr double kShearFactor = 0.5773502691896258;  // 1 / sqrt(3): von Mises shear yield
 constexpr double kPoisson = 0.3;
 
 btTransform translation(double x, double y, double z)
@@ -36,25 +36,28 @@ struct SectionDofs
 
 SectionDofs sectionDofs(const CharpyParameters& p, double h, double segment_m)
 {
-	const double b = p.specimen_width_m;
-	const double fy = p.yield_stress_pa;
-	const double E = p.youngs_modulus_pa;
-	const double G = E / (2.0 * (1.0 + kPoisson));
-	const double A = b * h;
-	const double shortSide = std::min(b, h), longSide = std::max(b, h);
+	plastic::Material material;
+	material.youngs_modulus_pa = p.youngs_modulus_pa;
+	material.poisson_ratio = kPoisson;
+	material.yield_stress_pa = p.yield_stress_pa;
+	// the toolkit's member axis is the specimen axis (world Z), its width the specimen width (world Y) and its
+	// depth h the impact direction (world X): "about y" is frame X here, "about z" frame Y
+	const plastic::SectionProperties section = plastic::rectangle(p.specimen_width_m, h);
+	const plastic::SectionCapacities capacity = plastic::capacities(section, material);
+	const plastic::SegmentStiffness k = plastic::stiffness(section, material, segment_m);
 	SectionDofs s{};
 	// linear: frame X (world Y) and Y (world X) shear, Z axial
-	s.maxForce[0] = s.maxForce[1] = kShearFactor * fy * A;
-	s.maxForce[2] = fy * A;
-	s.stiffness[0] = s.stiffness[1] = G * A / segment_m;
-	s.stiffness[2] = E * A / segment_m;
+	s.maxForce[0] = s.maxForce[1] = capacity.shear_n;
+	s.maxForce[2] = capacity.axial_n;
+	s.stiffness[0] = s.stiffness[1] = k.shear_n_m;
+	s.stiffness[2] = k.axial_n_m;
 	// angular: frame X (world Y) bending by the impact, frame Y (world X) bending the other way, Z torsion
-	s.maxForce[3] = fy * b * h * h / 4.0;
-	s.maxForce[4] = fy * h * b * b / 4.0;
-	s.maxForce[5] = kShearFactor * fy * shortSide * shortSide * (3.0 * longSide - shortSide) / 6.0;
-	s.stiffness[3] = E * (b * h * h * h / 12.0) / segment_m;
-	s.stiffness[4] = E * (h * b * b * b / 12.0) / segment_m;
-	s.stiffness[5] = G * (0.141 * longSide * shortSide * shortSide * shortSide) / segment_m;
+	s.maxForce[3] = capacity.plastic_moment_y_nm;
+	s.maxForce[4] = capacity.plastic_moment_z_nm;
+	s.maxForce[5] = capacity.torque_nm;
+	s.stiffness[3] = k.bending_y_nm_rad;
+	s.stiffness[4] = k.bending_z_nm_rad;
+	s.stiffness[5] = k.torsion_nm_rad;
 	return s;
 }
 }  // namespace

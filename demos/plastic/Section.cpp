@@ -1,0 +1,148 @@
+#include "Section.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace plastic
+{
+namespace
+{
+void requirePositive(const char* name, double value)
+{
+	if (!(value > 0) || !std::isfinite(value))
+	{
+		throw std::invalid_argument(std::string(name) + ": " + std::to_string(value) + " is not in (0, inf) m");
+	}
+}
+}  // namespace
+
+double rectangleTorsionConstant_m4(double side1_m, double side2_m)
+{
+	const double a = std::max(side1_m, side2_m), b = std::min(side1_m, side2_m);
+	const double r = b / a;
+	const double beta = (1.0 - 0.63 * r + 0.052 * std::pow(r, 5)) / 3.0;
+	return beta * a * b * b * b;
+}
+
+SectionProperties rectangle(double width_m, double depth_m)
+{
+	requirePositive("width", width_m);
+	requirePositive("depth", depth_m);
+	const double b = width_m, h = depth_m;
+	const double a = std::max(b, h), t = std::min(b, h);
+	SectionProperties s;
+	s.shape = "rectangle";
+	s.area_m2 = b * h;
+	s.shear_area_m2 = s.area_m2;
+	s.second_moment_y_m4 = b * h * h * h / 12.0;
+	s.second_moment_z_m4 = h * b * b * b / 12.0;
+	s.plastic_modulus_y_m3 = b * h * h / 4.0;
+	s.plastic_modulus_z_m3 = h * b * b / 4.0;
+	s.torsion_constant_m4 = rectangleTorsionConstant_m4(b, h);
+	s.plastic_torsion_modulus_m3 = t * t * (3.0 * a - t) / 6.0;  // sand-heap analogy
+	return s;
+}
+
+SectionProperties notchedRectangle(double width_m, double depth_m, double notch_depth_m)
+{
+	requirePositive("depth", depth_m);
+	if (!(notch_depth_m >= 0) || !(notch_depth_m < depth_m))
+	{
+		throw std::invalid_argument("notch depth: " + std::to_string(notch_depth_m) + " is not in [0, depth = " +
+									std::to_string(depth_m) + ") m");
+	}
+	SectionProperties s = rectangle(width_m, depth_m - notch_depth_m);
+	s.shape = "notched rectangle";
+	return s;
+}
+
+SectionProperties roundBar(double diameter_m)
+{
+	requirePositive("diameter", diameter_m);
+	const double d = diameter_m;
+	SectionProperties s;
+	s.shape = "round bar";
+	s.area_m2 = M_PI * d * d / 4.0;
+	s.shear_area_m2 = s.area_m2;
+	s.second_moment_y_m4 = s.second_moment_z_m4 = M_PI * std::pow(d, 4) / 64.0;
+	s.plastic_modulus_y_m3 = s.plastic_modulus_z_m3 = d * d * d / 6.0;
+	s.torsion_constant_m4 = M_PI * std::pow(d, 4) / 32.0;
+	s.plastic_torsion_modulus_m3 = M_PI * d * d * d / 12.0;
+	return s;
+}
+
+SectionProperties tube(double outer_diameter_m, double wall_m)
+{
+	requirePositive("outer diameter", outer_diameter_m);
+	if (!(wall_m > 0) || !(2.0 * wall_m < outer_diameter_m))
+	{
+		throw std::invalid_argument("wall: " + std::to_string(wall_m) + " is not in (0, outer diameter / 2 = " +
+									std::to_string(outer_diameter_m / 2.0) + ") m");
+	}
+	const double D = outer_diameter_m, d = outer_diameter_m - 2.0 * wall_m;
+	SectionProperties s;
+	s.shape = "tube";
+	s.area_m2 = M_PI * (D * D - d * d) / 4.0;
+	s.shear_area_m2 = 2.0 * s.area_m2 / M_PI;
+	s.second_moment_y_m4 = s.second_moment_z_m4 = M_PI * (std::pow(D, 4) - std::pow(d, 4)) / 64.0;
+	s.plastic_modulus_y_m3 = s.plastic_modulus_z_m3 = (D * D * D - d * d * d) / 6.0;
+	s.torsion_constant_m4 = M_PI * (std::pow(D, 4) - std::pow(d, 4)) / 32.0;
+	s.plastic_torsion_modulus_m3 = M_PI * (D * D * D - d * d * d) / 12.0;
+	return s;
+}
+
+SectionProperties iSection(double depth_m, double flange_width_m, double web_thickness_m, double flange_thickness_m)
+{
+	requirePositive("depth", depth_m);
+	requirePositive("flange width", flange_width_m);
+	if (!(flange_thickness_m > 0) || !(2.0 * flange_thickness_m < depth_m))
+	{
+		throw std::invalid_argument("flange thickness: " + std::to_string(flange_thickness_m) + " is not in (0, depth / 2 = " +
+									std::to_string(depth_m / 2.0) + ") m");
+	}
+	if (!(web_thickness_m > 0) || !(web_thickness_m <= flange_width_m))
+	{
+		throw std::invalid_argument("web thickness: " + std::to_string(web_thickness_m) + " is not in (0, flange width = " +
+									std::to_string(flange_width_m) + "] m");
+	}
+	const double h = depth_m, b = flange_width_m, tw = web_thickness_m, tf = flange_thickness_m;
+	const double hw = h - 2.0 * tf;  // clear web depth
+	SectionProperties s;
+	s.shape = "I section";
+	s.area_m2 = 2.0 * b * tf + hw * tw;
+	s.shear_area_m2 = hw * tw;
+	s.second_moment_y_m4 = b * h * h * h / 12.0 - (b - tw) * hw * hw * hw / 12.0;
+	s.second_moment_z_m4 = 2.0 * tf * b * b * b / 12.0 + hw * tw * tw * tw / 12.0;
+	s.plastic_modulus_y_m3 = b * tf * (h - tf) + tw * hw * hw / 4.0;
+	s.plastic_modulus_z_m3 = tf * b * b / 2.0 + hw * tw * tw / 4.0;
+	// thin-walled open section: J = sum of l t^3 / 3, plastic torque = sum of l t^2 / 2 (times tau_y)
+	s.torsion_constant_m4 = (2.0 * b * tf * tf * tf + (h - tf) * tw * tw * tw) / 3.0;
+	s.plastic_torsion_modulus_m3 = (2.0 * b * tf * tf + hw * tw * tw) / 2.0;
+	return s;
+}
+
+SectionCapacities capacities(const SectionProperties& s, const Material& m)
+{
+	SectionCapacities c;
+	c.axial_n = m.yield_stress_pa * s.area_m2;
+	c.shear_n = m.shearYieldStress_pa() * s.shear_area_m2;
+	c.plastic_moment_y_nm = m.yield_stress_pa * s.plastic_modulus_y_m3;
+	c.plastic_moment_z_nm = m.yield_stress_pa * s.plastic_modulus_z_m3;
+	c.torque_nm = m.shearYieldStress_pa() * s.plastic_torsion_modulus_m3;
+	return c;
+}
+
+SegmentStiffness stiffness(const SectionProperties& s, const Material& m, double segment_length_m)
+{
+	requirePositive("segment length", segment_length_m);
+	const double L = segment_length_m;
+	SegmentStiffness k;
+	k.axial_n_m = m.youngs_modulus_pa * s.area_m2 / L;
+	k.shear_n_m = m.shearModulus_pa() * s.shear_area_m2 / L;
+	k.bending_y_nm_rad = m.youngs_modulus_pa * s.second_moment_y_m4 / L;
+	k.bending_z_nm_rad = m.youngs_modulus_pa * s.second_moment_z_m4 / L;
+	k.torsion_nm_rad = m.shearModulus_pa() * s.torsion_constant_m4 / L;
+	return k;
+}
+}  // namespace plastic

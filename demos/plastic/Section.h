@@ -1,0 +1,65 @@
+// Cross-sections of a member: geometric properties, plastic capacities and elastic stiffness per length.
+// The member runs along its local x; the section lies in y-z. "About y" is bending in the x-z plane (the
+// depth along z resists it), "about z" bending in the x-y plane. Every length is in m, every result carries
+// its unit in its name. Invalid dimensions are refused with std::invalid_argument naming the parameter and
+// its valid range.
+#pragma once
+
+#include <string>
+
+#include "Material.h"
+
+namespace plastic
+{
+struct SectionProperties
+{
+	std::string shape;
+	double area_m2 = 0;
+	double shear_area_m2 = 0;            // area that carries shear in the plastic shear capacity
+	double second_moment_y_m4 = 0;       // I about y
+	double second_moment_z_m4 = 0;       // I about z
+	double plastic_modulus_y_m3 = 0;     // W_pl about y: Mp_y = fy * W_pl_y
+	double plastic_modulus_z_m3 = 0;
+	double torsion_constant_m4 = 0;      // St Venant J: torsional stiffness G J / L
+	double plastic_torsion_modulus_m3 = 0;  // fully plastic torque = tau_y * this
+};
+
+// Capacities (N, N m) of a section of a material: the forces and moments at which it is fully plastic.
+struct SectionCapacities
+{
+	double axial_n = 0;
+	double shear_n = 0;
+	double plastic_moment_y_nm = 0;
+	double plastic_moment_z_nm = 0;
+	double torque_nm = 0;
+};
+
+// Elastic stiffness of a segment of length L (N/m, N m/rad): EA/L, GA/L, EI/L, GJ/L.
+struct SegmentStiffness
+{
+	double axial_n_m = 0;
+	double shear_n_m = 0;
+	double bending_y_nm_rad = 0;
+	double bending_z_nm_rad = 0;
+	double torsion_nm_rad = 0;
+};
+
+// Solid rectangle: width along y, depth along z.
+SectionProperties rectangle(double width_m, double depth_m);
+// The rectangle at a notch of notch_depth_m cut into its depth: the ligament width x (depth - notch).
+SectionProperties notchedRectangle(double width_m, double depth_m, double notch_depth_m);
+// Solid round bar.
+SectionProperties roundBar(double diameter_m);
+// Circular tube (outer diameter, wall thickness); the shear area is 2 A / pi.
+SectionProperties tube(double outer_diameter_m, double wall_m);
+// Doubly symmetric I section: depth along z, flange width along y; without root fillets (catalogue values,
+// which include them, are a few percent higher). The shear area is the web's, (depth - 2 flange) x web.
+SectionProperties iSection(double depth_m, double flange_width_m, double web_thickness_m, double flange_thickness_m);
+
+SectionCapacities capacities(const SectionProperties& section, const Material& material);
+SegmentStiffness stiffness(const SectionProperties& section, const Material& material, double segment_length_m);
+
+// St Venant torsion constant of a solid rectangle with sides a >= b: beta a b^3, beta = 1/3 (1 - 0.63 b/a +
+// 0.052 (b/a)^5) (Roark): 0.141 for a square, 0.196 for 8 x 10 mm, -> 1/3 for a thin strip.
+double rectangleTorsionConstant_m4(double side1_m, double side2_m);
+}  // namespace plastic
