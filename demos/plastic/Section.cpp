@@ -33,6 +33,8 @@ SectionProperties rectangle(double width_m, double depth_m)
 	const double a = std::max(b, h), t = std::min(b, h);
 	SectionProperties s;
 	s.shape = "rectangle";
+	s.width_m = b;
+	s.depth_m = h;
 	s.area_m2 = b * h;
 	s.shear_area_m2 = s.area_m2;
 	s.second_moment_y_m4 = b * h * h * h / 12.0;
@@ -63,6 +65,7 @@ SectionProperties roundBar(double diameter_m)
 	const double d = diameter_m;
 	SectionProperties s;
 	s.shape = "round bar";
+	s.width_m = s.depth_m = d;
 	s.area_m2 = M_PI * d * d / 4.0;
 	s.shear_area_m2 = s.area_m2;
 	s.second_moment_y_m4 = s.second_moment_z_m4 = M_PI * std::pow(d, 4) / 64.0;
@@ -83,6 +86,7 @@ SectionProperties tube(double outer_diameter_m, double wall_m)
 	const double D = outer_diameter_m, d = outer_diameter_m - 2.0 * wall_m;
 	SectionProperties s;
 	s.shape = "tube";
+	s.width_m = s.depth_m = D;
 	s.area_m2 = M_PI * (D * D - d * d) / 4.0;
 	s.shear_area_m2 = 2.0 * s.area_m2 / M_PI;
 	s.second_moment_y_m4 = s.second_moment_z_m4 = M_PI * (std::pow(D, 4) - std::pow(d, 4)) / 64.0;
@@ -110,6 +114,8 @@ SectionProperties iSection(double depth_m, double flange_width_m, double web_thi
 	const double hw = h - 2.0 * tf;  // clear web depth
 	SectionProperties s;
 	s.shape = "I section";
+	s.width_m = b;
+	s.depth_m = h;
 	s.area_m2 = 2.0 * b * tf + hw * tw;
 	s.shear_area_m2 = hw * tw;
 	s.second_moment_y_m4 = b * h * h * h / 12.0 - (b - tw) * hw * hw * hw / 12.0;

@@ -14,6 +14,8 @@ namespace plastic
 struct SectionProperties
 {
 	std::string shape;
+	double width_m = 0;   // bounding box along y
+	double depth_m = 0;   // bounding box along z
 	double area_m2 = 0;
 	double shear_area_m2 = 0;            // area that carries shear in the plastic shear capacity
 	double second_moment_y_m4 = 0;       // I about y

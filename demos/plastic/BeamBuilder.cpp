@@ -1,0 +1,83 @@
+#include "BeamBuilder.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace plastic
+{
+Beam::Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* support) : m_world(world)
+{
+	if (spec.segments < 1 || spec.segments > 10000)
+	{
+		throw std::invalid_argument("segments: " + std::to_string(spec.segments) + " is not in [1, 10000]");
+	}
+	const btVector3 member = spec.end_m - spec.start_m;
+	const double length_m = member.length();
+	if (!(length_m > 0))
+	{
+		throw std::invalid_argument("end: the member from start to end has no length");
+	}
+	const btVector3 axis = member / btScalar(length_m);
+	btVector3 bending = spec.bending_axis - axis * spec.bending_axis.dot(axis);
+	if (!(bending.length() > 1e-6))
+	{
+		throw std::invalid_argument("bending axis: it must not be parallel to the member");
+	}
+	bending.normalize();
+	const btVector3 other = axis.cross(bending);
+	btMatrix3x3 basis;  // columns: bending axis 1, bending axis 2, member axis
+	basis.setValue(bending.x(), other.x(), axis.x(), bending.y(), other.y(), axis.y(), bending.z(), other.z(), axis.z());
+	m_segmentLength_m = length_m / spec.segments;
+	// the segment box: depth (section z) across the main bending axis, width (section y) along it
+	m_shape = std::make_unique<btBoxShape>(btVector3(btScalar(spec.section.width_m / 2), btScalar(spec.section.depth_m / 2), btScalar(m_segmentLength_m / 2)));
+	const btScalar mass = btScalar(spec.material.density_kg_m3 * spec.section.area_m2 * m_segmentLength_m);
+	btVector3 inertia;
+	m_shape->calculateLocalInertia(mass, inertia);
+	// the box's local x is bending axis 1, y bending axis 2, z the member
+	btRigidBody* previous = support;
+	for (int i = 0; i < spec.segments; i++)
+	{
+		btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, m_shape.get(), inertia);
+		info.m_startWorldTransform = btTransform(basis, spec.start_m + axis * btScalar((i + 0.5) * m_segmentLength_m));
+		m_bodies.push_back(std::make_unique<btRigidBody>(info));
+		btRigidBody* body = m_bodies.back().get();
+		body->setActivationState(DISABLE_DEACTIVATION);
+		m_world.addRigidBody(body);
+		m_segments.push_back(body);
+		if (previous)
+		{
+			JointSpec joint;
+			joint.method = spec.method;
+			joint.pivot_m = spec.start_m + axis * btScalar(i * m_segmentLength_m);
+			joint.basis = basis;
+			joint.section = spec.section;
+			joint.material = spec.material;
+			joint.segment_length_m = m_segmentLength_m;
+			joint.max_plastic_rotation_rad = spec.max_plastic_rotation_rad;
+			m_ownedJoints.push_back(makeJoint(joint, *previous, *body));
+			m_joints.push_back(m_ownedJoints.back().get());
+			m_specs.push_back(joint);
+			m_world.addConstraint(m_joints.back(), true);
+		}
+		previous = body;
+	}
+}
+
+Beam::~Beam()
+{
+	for (btTypedConstraint* j : m_joints) m_world.removeConstraint(j);
+	for (btRigidBody* b : m_segments) m_world.removeRigidBody(b);
+}
+
+double Beam::plasticWork_j() const
+{
+	double w = 0;
+	for (const btTypedConstraint* j : m_joints) w += jointPlasticWork_j(*j);
+	return w;
+}
+
+void Beam::updateForStep(double step_s)
+{
+	for (size_t i = 0; i < m_joints.size(); i++) updateJointForStep(*m_joints[i], m_specs[i], step_s);
+}
+}  // namespace plastic

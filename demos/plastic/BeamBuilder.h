@@ -1,0 +1,52 @@
+// A straight member from A to B in n rigid segments joined by joints of one method (JointFactory), its
+// start optionally fixed to a support by the same kind of joint. The Beam owns its bodies and joints and takes
+// them out of the world when it is destroyed.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "JointFactory.h"
+
+namespace plastic
+{
+struct BeamSpec
+{
+	btVector3 start_m{0, 0, 0};
+	btVector3 end_m{1, 0, 0};
+	int segments = 4;
+	SectionProperties section;
+	Material material;
+	btVector3 bending_axis{0, 0, 1};  // world axis of the main bending (a hinge's axis), across the member
+	JointMethod method = JointMethod::PlasticHinge;
+	double max_plastic_rotation_rad = 1e9;
+};
+
+class Beam
+{
+public:
+	// support: a static body the start is fixed to (its joint is the first one), or nullptr for a free start
+	Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* support);
+	~Beam();
+	Beam(const Beam&) = delete;
+	Beam& operator=(const Beam&) = delete;
+
+	const std::vector<btRigidBody*>& segments() const { return m_segments; }
+	const std::vector<btTypedConstraint*>& joints() const { return m_joints; }  // from the start to the end
+	const std::vector<JointSpec>& jointSpecs() const { return m_specs; }
+	double segmentLength_m() const { return m_segmentLength_m; }
+	double plasticWork_j() const;
+	// call before each step: the hinge-motor stand-in's impulse follows the step
+	void updateForStep(double step_s);
+
+private:
+	btDiscreteDynamicsWorld& m_world;
+	double m_segmentLength_m;
+	std::unique_ptr<btCollisionShape> m_shape;
+	std::vector<std::unique_ptr<btRigidBody>> m_bodies;
+	std::vector<std::unique_ptr<btTypedConstraint>> m_ownedJoints;
+	std::vector<btRigidBody*> m_segments;
+	std::vector<btTypedConstraint*> m_joints;
+	std::vector<JointSpec> m_specs;
+};
+}  // namespace plastic

@@ -1,0 +1,118 @@
+#include "JointFactory.h"
+
+#include <stdexcept>
+
+namespace plastic
+{
+namespace
+{
+// the joint's frame in a body: the world pivot and basis expressed in the body
+btTransform frameIn(const btRigidBody& body, const JointSpec& spec)
+{
+	const btTransform world(spec.basis, spec.pivot_m);
+	return body.getCenterOfMassTransform().inverse() * world;
+}
+
+// 6DOF frame: X = bending axis 1, Y = bending axis 2, Z = member axis; linear DOFs 0-2 along them
+template <class Constraint, class Stiffness>
+void configureElasticPlastic(Constraint& c, const JointSpec& spec, Stiffness setStiffness)
+{
+	const SectionCapacities cap = capacities(spec.section, spec.material);
+	const SegmentStiffness k = stiffness(spec.section, spec.material, spec.segment_length_m);
+	const double maxForce[6] = {cap.shear_n, cap.shear_n, cap.axial_n, cap.plastic_moment_y_nm, cap.plastic_moment_z_nm, cap.torque_nm};
+	const double stiff[6] = {k.shear_n_m, k.shear_n_m, k.axial_n_m, k.bending_y_nm_rad, k.bending_z_nm_rad, k.torsion_nm_rad};
+	for (int i = 0; i < 6; i++)
+	{
+		setStiffness(c, i, stiff[i]);
+		c.setMaxForce(i, btScalar(maxForce[i]));
+	}
+	c.setMaxPlasticRotation(btScalar(spec.max_plastic_rotation_rad));
+	c.resetPlasticState();
+}
+}  // namespace
+
+const char* jointMethodName(JointMethod method)
+{
+	switch (method)
+	{
+		case JointMethod::HingeMotor: return "hinge-motor";
+		case JointMethod::PlasticHinge: return "plastic-hinge";
+		case JointMethod::ElasticPlastic: return "elastic-plastic";
+		case JointMethod::ElasticPlastic2: return "elastic-plastic2";
+	}
+	return "?";
+}
+
+std::unique_ptr<btTypedConstraint> makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
+{
+	if (!(spec.segment_length_m > 0))
+	{
+		throw std::invalid_argument("segment length: " + std::to_string(spec.segment_length_m) + " is not in (0, inf) m");
+	}
+	if (!(spec.max_plastic_rotation_rad > 0))
+	{
+		throw std::invalid_argument("max plastic rotation: " + std::to_string(spec.max_plastic_rotation_rad) + " is not in (0, inf) rad");
+	}
+	// a hinge's axis is the frame's Z: turn the basis so that bending axis 1 becomes Z
+	btMatrix3x3 hingeBasis;
+	hingeBasis.setValue(spec.basis[0][1], spec.basis[0][2], spec.basis[0][0],  //
+						spec.basis[1][1], spec.basis[1][2], spec.basis[1][0],  //
+						spec.basis[2][1], spec.basis[2][2], spec.basis[2][0]);
+	JointSpec hingeSpec = spec;
+	hingeSpec.basis = hingeBasis;
+	const SectionCapacities cap = capacities(spec.section, spec.material);
+	switch (spec.method)
+	{
+		case JointMethod::HingeMotor:
+		{
+			auto h = std::make_unique<btHingeConstraint>(a, b, frameIn(a, hingeSpec), frameIn(b, hingeSpec));
+			h->enableAngularMotor(true, 0, 0);
+			return h;
+		}
+		case JointMethod::PlasticHinge:
+		{
+			auto h = std::make_unique<btPlasticHingeConstraint>(a, b, frameIn(a, hingeSpec), frameIn(b, hingeSpec));
+			h->setPlasticMoment(btScalar(cap.plastic_moment_y_nm));
+			h->setMaxPlasticRotation(btScalar(spec.max_plastic_rotation_rad));
+			return h;
+		}
+		case JointMethod::ElasticPlastic:
+		{
+			auto c = std::make_unique<bt6DofElasticPlasticConstraint>(a, b, frameIn(a, spec), frameIn(b, spec), true);
+			configureElasticPlastic(*c, spec, [](bt6DofElasticPlasticConstraint& j, int i, double k) { j.setStiffness(i, btScalar(k)); });
+			return c;
+		}
+		case JointMethod::ElasticPlastic2:
+		{
+			auto c = std::make_unique<bt6DofElasticPlastic2Constraint>(a, b, frameIn(a, spec), frameIn(b, spec));
+			configureElasticPlastic(*c, spec, [](bt6DofElasticPlastic2Constraint& j, int i, double k) { j.setStiffness(i, btScalar(k), false); });
+			return c;
+		}
+	}
+	throw std::invalid_argument("method: not one of hinge-motor, plastic-hinge, elastic-plastic, elastic-plastic2");
+}
+
+void updateJointForStep(btTypedConstraint& joint, const JointSpec& spec, double step_s)
+{
+	if (spec.method == JointMethod::HingeMotor)
+	{
+		static_cast<btHingeConstraint&>(joint).setMaxMotorImpulse(btScalar(capacities(spec.section, spec.material).plastic_moment_y_nm * step_s));
+	}
+}
+
+double jointPlasticWork_j(const btTypedConstraint& joint)
+{
+	if (auto* h = dynamic_cast<const btPlasticHingeConstraint*>(&joint)) return h->getAbsorbedEnergy();
+	if (auto* c = dynamic_cast<const bt6DofElasticPlastic2Constraint*>(&joint)) return c->getAbsorbedEnergy();
+	if (auto* c = dynamic_cast<const bt6DofElasticPlasticConstraint*>(&joint)) return c->getAbsorbedEnergy();
+	return 0;
+}
+
+double jointPlasticRotation_rad(const btTypedConstraint& joint)
+{
+	if (auto* h = dynamic_cast<const btPlasticHingeConstraint*>(&joint)) return h->getCurrentPlasticRotation();
+	if (auto* c = dynamic_cast<const bt6DofElasticPlastic2Constraint*>(&joint)) return c->getCurrentPlasticRotation();
+	if (auto* c = dynamic_cast<const bt6DofElasticPlasticConstraint*>(&joint)) return c->getCurrentPlasticRotation();
+	return 0;
+}
+}  // namespace plastic

@@ -1,0 +1,112 @@
+// A cantilever built by the toolkit (BeamBuilder, JointFactory) against plastic analysis: a tip load P on a
+// member of length L fixed at its start collapses it at P = Mp / L, with the hinge at the support and the inner
+// joints locked (their moments are 3/4, 1/2 and 1/4 of the root's with four segments). Every joint method.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "BeamBuilder.h"
+
+using namespace plastic;
+
+namespace
+{
+struct Rig
+{
+	btDefaultCollisionConfiguration configuration;
+	btCollisionDispatcher dispatcher{&configuration};
+	btDbvtBroadphase broadphase;
+	btSequentialImpulseConstraintSolver solver;
+	btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+	btBoxShape supportShape{btVector3(0.1, 0.1, 0.1)};
+	btRigidBody support{btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &supportShape)};
+	Rig(int iterations)
+	{
+		world.setGravity(btVector3(0, 0, 0));
+		world.getSolverInfo().m_numIterations = iterations;
+		support.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(-0.1, 0, 0)));
+		world.addRigidBody(&support, 0, 0);
+	}
+	~Rig() { world.removeRigidBody(&support); }
+};
+
+struct Outcome
+{
+	double rootRotation_rad;
+	double innerRotation_rad;  // largest plastic rotation of the inner joints
+	double plasticWork_j;
+};
+
+// tip load P (N, along -y) for a time at a step, on a 2 m, 4-segment, 50 x 100 mm steel cantilever bending about z
+Outcome load(JointMethod method, double loadFactor, int iterations, double step_s = 1.0 / 240.0, double seconds = 1.0)
+{
+	Rig rig(iterations);
+	BeamSpec spec;
+	spec.start_m = btVector3(0, 0, 0);
+	spec.end_m = btVector3(2, 0, 0);
+	spec.segments = 4;
+	spec.section = rectangle(0.05, 0.10);
+	spec.material = steel();
+	spec.bending_axis = btVector3(0, 0, 1);
+	spec.method = method;
+	Beam beam(rig.world, spec, &rig.support);
+	const double mp = capacities(spec.section, spec.material).plastic_moment_y_nm;  // 50 kN m
+	const double P = loadFactor * mp / 2.0;
+	btRigidBody* tip = beam.segments().back();
+	const int steps = static_cast<int>(std::lround(seconds / step_s));
+	for (int i = 0; i < steps; i++)
+	{
+		const btVector3 arm = tip->getWorldTransform().getBasis() * btVector3(0, 0, btScalar(beam.segmentLength_m() / 2));
+		tip->applyForce(btVector3(0, btScalar(-P), 0), arm);
+		beam.updateForStep(step_s);
+		rig.world.stepSimulation(btScalar(step_s), 0);
+	}
+	Outcome o{};
+	const btVector3 x = beam.segments().front()->getWorldTransform().getBasis() * btVector3(0, 0, 1);
+	o.rootRotation_rad = std::atan2(-double(x.y()), double(x.x()));
+	for (size_t j = 1; j < beam.joints().size(); j++) o.innerRotation_rad = std::max(o.innerRotation_rad, jointPlasticRotation_rad(*beam.joints()[j]));
+	o.plasticWork_j = beam.plasticWork_j();
+	return o;
+}
+}  // namespace
+
+// With a converged solver (1000 iterations at 1/240 s). At game settings the chain does not hold: at 10 and 50
+// iterations the plastic hinge's cantilever rotates 0.91 and 0.50 rad at 0.95 Mp/L in a second (200: 0.10,
+// 1000: 0.003); finding the means that hold it at 10 iterations is issue 13.
+TEST(ToolkitCantilever, CollapsesAtMpOverLWithTheHingeAtTheSupport)
+{
+	for (JointMethod m : {JointMethod::PlasticHinge, JointMethod::ElasticPlastic2, JointMethod::ElasticPlastic, JointMethod::HingeMotor})
+	{
+		const std::string name = jointMethodName(m);
+		const Outcome below = load(m, 0.95, 1000);
+		// the upstream stand-in creeps (0.043 rad in the second): a motor at target 0 has no angle to return to
+		EXPECT_LT(std::fabs(below.rootRotation_rad), m == JointMethod::HingeMotor ? 0.1 : 0.01) << name << ": holds at 0.95 Mp / L";
+		EXPECT_EQ(below.plasticWork_j, 0.0) << name;
+		const Outcome above = load(m, 1.05, 1000);
+		EXPECT_GT(above.rootRotation_rad, 0.1) << name << ": collapses at 1.05 Mp / L";
+		EXPECT_LT(above.innerRotation_rad, 0.01 * above.rootRotation_rad + 1e-4) << name << ": the inner joints stay locked";
+		std::printf("[ info     ] %s: root rotation %.4f rad at 0.95 Mp/L, %.3f rad at 1.05 Mp/L (1000 iterations, 1/240 s)\n", name.c_str(),
+					below.rootRotation_rad, above.rootRotation_rad);
+	}
+}
+
+TEST(ToolkitCantilever, BadSpecificationsAreRefusedByName)
+{
+	Rig rig(10);
+	BeamSpec spec;
+	spec.section = rectangle(0.05, 0.1);
+	spec.segments = 0;
+	EXPECT_THROW(Beam(rig.world, spec, &rig.support), std::invalid_argument);
+	spec.segments = 2;
+	spec.bending_axis = btVector3(1, 0, 0);  // along the member
+	try
+	{
+		Beam beam(rig.world, spec, &rig.support);
+		FAIL() << "a bending axis along the member was accepted";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("bending axis"), std::string::npos);
+	}
+}
