@@ -54,10 +54,9 @@ Beam::Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* su
 			joint.material = spec.material;
 			joint.segment_length_m = m_segmentLength_m;
 			joint.max_plastic_rotation_rad = spec.max_plastic_rotation_rad;
-			m_ownedJoints.push_back(makeJoint(joint, *previous, *body));
-			m_joints.push_back(m_ownedJoints.back().get());
+			m_joints.push_back(makeJoint(joint, *previous, *body));
 			m_specs.push_back(joint);
-			m_world.addConstraint(m_joints.back(), true);
+			m_world.addConstraint(m_joints.back().constraint.get(), true);
 		}
 		previous = body;
 	}
@@ -65,19 +64,19 @@ Beam::Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* su
 
 Beam::~Beam()
 {
-	for (btTypedConstraint* j : m_joints) m_world.removeConstraint(j);
+	for (Joint& j : m_joints) m_world.removeConstraint(j.constraint.get());
 	for (btRigidBody* b : m_segments) m_world.removeRigidBody(b);
 }
 
 double Beam::plasticWork_j() const
 {
 	double w = 0;
-	for (const btTypedConstraint* j : m_joints) w += jointPlasticWork_j(*j);
+	for (const Joint& j : m_joints) w += j.plasticWork_j();
 	return w;
 }
 
 void Beam::updateForStep(double step_s)
 {
-	for (size_t i = 0; i < m_joints.size(); i++) updateJointForStep(*m_joints[i], m_specs[i], step_s);
+	for (size_t i = 0; i < m_joints.size(); i++) updateJointForStep(*m_joints[i].constraint, m_specs[i], step_s);
 }
 }  // namespace plastic

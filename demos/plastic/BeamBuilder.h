@@ -32,7 +32,7 @@ public:
 	Beam& operator=(const Beam&) = delete;
 
 	const std::vector<btRigidBody*>& segments() const { return m_segments; }
-	const std::vector<btTypedConstraint*>& joints() const { return m_joints; }  // from the start to the end
+	const std::vector<Joint>& joints() const { return m_joints; }  // from the start to the end
 	const std::vector<JointSpec>& jointSpecs() const { return m_specs; }
 	double segmentLength_m() const { return m_segmentLength_m; }
 	double plasticWork_j() const;
@@ -44,9 +44,8 @@ private:
 	double m_segmentLength_m;
 	std::unique_ptr<btCollisionShape> m_shape;
 	std::vector<std::unique_ptr<btRigidBody>> m_bodies;
-	std::vector<std::unique_ptr<btTypedConstraint>> m_ownedJoints;
 	std::vector<btRigidBody*> m_segments;
-	std::vector<btTypedConstraint*> m_joints;
+	std::vector<Joint> m_joints;
 	std::vector<JointSpec> m_specs;
 };
 }  // namespace plastic

@@ -43,7 +43,7 @@ const char* jointMethodName(JointMethod method)
 	return "?";
 }
 
-std::unique_ptr<btTypedConstraint> makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
+Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 {
 	if (!(spec.segment_length_m > 0))
 	{
@@ -67,26 +67,29 @@ std::unique_ptr<btTypedConstraint> makeJoint(const JointSpec& spec, btRigidBody&
 		{
 			auto h = std::make_unique<btHingeConstraint>(a, b, frameIn(a, hingeSpec), frameIn(b, hingeSpec));
 			h->enableAngularMotor(true, 0, 0);
-			return h;
+			return Joint{std::move(h), nullptr};
 		}
 		case JointMethod::PlasticHinge:
 		{
 			auto h = std::make_unique<btPlasticHingeConstraint>(a, b, frameIn(a, hingeSpec), frameIn(b, hingeSpec));
 			h->setPlasticMoment(btScalar(cap.plastic_moment_y_nm));
 			h->setMaxPlasticRotation(btScalar(spec.max_plastic_rotation_rad));
-			return h;
+			const btPlasticConstraintState* state = &h->getPlasticState();
+			return Joint{std::move(h), state};
 		}
 		case JointMethod::ElasticPlastic:
 		{
 			auto c = std::make_unique<bt6DofElasticPlasticConstraint>(a, b, frameIn(a, spec), frameIn(b, spec), true);
 			configureElasticPlastic(*c, spec, [](bt6DofElasticPlasticConstraint& j, int i, double k) { j.setStiffness(i, btScalar(k)); });
-			return c;
+			const btPlasticConstraintState* state = &c->getPlasticState();
+			return Joint{std::move(c), state};
 		}
 		case JointMethod::ElasticPlastic2:
 		{
 			auto c = std::make_unique<bt6DofElasticPlastic2Constraint>(a, b, frameIn(a, spec), frameIn(b, spec));
 			configureElasticPlastic(*c, spec, [](bt6DofElasticPlastic2Constraint& j, int i, double k) { j.setStiffness(i, btScalar(k), false); });
-			return c;
+			const btPlasticConstraintState* state = &c->getPlasticState();
+			return Joint{std::move(c), state};
 		}
 	}
 	throw std::invalid_argument("method: not one of hinge-motor, plastic-hinge, elastic-plastic, elastic-plastic2");
@@ -100,19 +103,4 @@ void updateJointForStep(btTypedConstraint& joint, const JointSpec& spec, double 
 	}
 }
 
-double jointPlasticWork_j(const btTypedConstraint& joint)
-{
-	if (auto* h = dynamic_cast<const btPlasticHingeConstraint*>(&joint)) return h->getAbsorbedEnergy();
-	if (auto* c = dynamic_cast<const bt6DofElasticPlastic2Constraint*>(&joint)) return c->getAbsorbedEnergy();
-	if (auto* c = dynamic_cast<const bt6DofElasticPlasticConstraint*>(&joint)) return c->getAbsorbedEnergy();
-	return 0;
-}
-
-double jointPlasticRotation_rad(const btTypedConstraint& joint)
-{
-	if (auto* h = dynamic_cast<const btPlasticHingeConstraint*>(&joint)) return h->getCurrentPlasticRotation();
-	if (auto* c = dynamic_cast<const bt6DofElasticPlastic2Constraint*>(&joint)) return c->getCurrentPlasticRotation();
-	if (auto* c = dynamic_cast<const bt6DofElasticPlasticConstraint*>(&joint)) return c->getCurrentPlasticRotation();
-	return 0;
-}
 }  // namespace plastic

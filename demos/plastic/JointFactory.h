@@ -34,13 +34,21 @@ struct JointSpec
 	double max_plastic_rotation_rad = 1e9; // accumulated plastic rotation that breaks it
 };
 
+// A joint and, for the plastic methods, its plastic bookkeeping (the same interface for all three classes, kept
+// when the joint is made, so nothing has to find out later which class a joint is). The hinge-motor stand-in has
+// none: its work is not booked by the joint.
+struct Joint
+{
+	std::unique_ptr<btTypedConstraint> constraint;
+	const btPlasticConstraintState* plasticState = nullptr;
+
+	double plasticWork_j() const { return plasticState ? plasticState->getAbsorbedEnergy() : 0.0; }
+	double elasticEnergy_j() const { return plasticState ? plasticState->getElasticEnergy() : 0.0; }
+	double plasticRotation_rad() const { return plasticState ? plasticState->getCurrentPlasticRotation() : 0.0; }
+};
+
 // The joint between a and b (b may be a static body). The hinge-motor stand-in's impulse follows the step:
 // call updateJointForStep before each step for it; the other methods need nothing.
-std::unique_ptr<btTypedConstraint> makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b);
+Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b);
 void updateJointForStep(btTypedConstraint& joint, const JointSpec& spec, double step_s);
-
-// Plastic work the joint has booked, J, and its plastic rotation, rad (0 for the hinge-motor stand-in, whose
-// work is not booked by the joint).
-double jointPlasticWork_j(const btTypedConstraint& joint);
-double jointPlasticRotation_rad(const btTypedConstraint& joint);
 }  // namespace plastic

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "BeamBuilder.h"
+#include "EnergyLedger.h"
 
 using namespace plastic;
 
@@ -36,6 +37,7 @@ struct Outcome
 	double rootRotation_rad;
 	double innerRotation_rad;  // largest plastic rotation of the inner joints
 	double plasticWork_j;
+	Energies energies;         // at the end, from the ledger
 };
 
 // tip load P (N, along -y) for a time at a step, on a 2 m, 4-segment, 50 x 100 mm steel cantilever bending about z
@@ -54,19 +56,25 @@ Outcome load(JointMethod method, double loadFactor, int iterations, double step_
 	const double mp = capacities(spec.section, spec.material).plastic_moment_y_nm;  // 50 kN m
 	const double P = loadFactor * mp / 2.0;
 	btRigidBody* tip = beam.segments().back();
+	PointLoad load(*tip, btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, btScalar(-P), 0));
+	EnergyLedger ledger(rig.world.getGravity());
+	for (btRigidBody* b : beam.segments()) ledger.addBody(*b);
+	for (const Joint& j : beam.joints()) ledger.addJoint(j);
+	ledger.addLoad(load);
 	const int steps = static_cast<int>(std::lround(seconds / step_s));
 	for (int i = 0; i < steps; i++)
 	{
-		const btVector3 arm = tip->getWorldTransform().getBasis() * btVector3(0, 0, btScalar(beam.segmentLength_m() / 2));
-		tip->applyForce(btVector3(0, btScalar(-P), 0), arm);
+		load.apply();
 		beam.updateForStep(step_s);
 		rig.world.stepSimulation(btScalar(step_s), 0);
+		load.afterStep();
 	}
 	Outcome o{};
 	const btVector3 x = beam.segments().front()->getWorldTransform().getBasis() * btVector3(0, 0, 1);
 	o.rootRotation_rad = std::atan2(-double(x.y()), double(x.x()));
-	for (size_t j = 1; j < beam.joints().size(); j++) o.innerRotation_rad = std::max(o.innerRotation_rad, jointPlasticRotation_rad(*beam.joints()[j]));
+	for (size_t j = 1; j < beam.joints().size(); j++) o.innerRotation_rad = std::max(o.innerRotation_rad, beam.joints()[j].plasticRotation_rad());
 	o.plasticWork_j = beam.plasticWork_j();
+	o.energies = ledger.measure();
 	return o;
 }
 }  // namespace
@@ -86,6 +94,14 @@ TEST(ToolkitCantilever, CollapsesAtMpOverLWithTheHingeAtTheSupport)
 		const Outcome above = load(m, 1.05, 1000);
 		EXPECT_GT(above.rootRotation_rad, 0.1) << name << ": collapses at 1.05 Mp / L";
 		EXPECT_LT(above.innerRotation_rad, 0.01 * above.rootRotation_rad + 1e-4) << name << ": the inner joints stay locked";
+		if (m != JointMethod::HingeMotor)
+		{
+			// the books balance: the load's work is the kinetic energy gained plus the plastic work
+			const Energies& e = above.energies;
+			EXPECT_NEAR(e.load_work_j, e.mechanical_j() + e.plastic_j, 0.02 * e.load_work_j) << name << ": load work " << e.load_work_j;
+			// and the collapse mechanism's plastic work is Mp times the root's rotation
+			EXPECT_NEAR(e.plastic_j, 50e3 * above.rootRotation_rad, 0.02 * e.plastic_j) << name;
+		}
 		std::printf("[ info     ] %s: root rotation %.4f rad at 0.95 Mp/L, %.3f rad at 1.05 Mp/L (1000 iterations, 1/240 s)\n", name.c_str(),
 					below.rootRotation_rad, above.rootRotation_rad);
 	}
