@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Error against run time: builds the console runner, sweeps the Charpy test (ci/charpy_sweep.py,
-# resumable) and writes report/charpy-sweep.csv, report/charpy-error-vs-runtime.png, report/REPORT.md.
+# resumable) and writes report/charpy-sweep.csv, report/charpy-error-vs-runtime.png, report/REPORT.md; then the
+# friction sweep (ci/charpy_friction_sweep.py: report/charpy-friction.csv, report/FRICTION.md).
 # Extra arguments go to the sweep (e.g. --jobs=1, --shard=1/2).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -9,3 +10,5 @@ bash ci/configure.sh -DBP_BUILD_TESTS=OFF
 cmake --build "${BUILD_DIR:-build}" --target charpy
 python3 ci/charpy_sweep.py --runner="${BUILD_DIR:-build}/bin/charpy" --out=report/charpy-sweep.csv "$@"
 python3 ci/charpy_report.py --csv=report/charpy-sweep.csv --out-dir=report --command="bash ci/report.sh $*"
+# The standard striker with friction beside the rigid-plastic model: report/charpy-friction.csv, report/FRICTION.md
+python3 ci/charpy_friction_sweep.py --runner="${BUILD_DIR:-build}/bin/charpy" --out-dir=report

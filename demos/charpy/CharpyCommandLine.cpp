@@ -62,11 +62,17 @@ const std::map<std::string, std::pair<Setter, const char*>>& valueFlags()
 		{"notch-depth", {number(&CharpyParameters::notch_depth_m), "M  default 0.002"}},
 		{"anvil-gap", {number(&CharpyParameters::anvil_gap_m), "M  default 0.04"}},
 		{"anvil-width", {number(&CharpyParameters::anvil_width_m), "M  default 0.04"}},
+		{"striker-radius", {number(&CharpyParameters::striker_radius_m), "M  striker edge radius, 0 = flat nose (default)"}},
 		{"hammer-mass", {number(&CharpyParameters::hammer_mass_kg), "KG  default 19.5"}},
 		{"hammer-thickness", {number(&CharpyParameters::hammer_thickness_m), "M  0 = no hammer, default 0.02"}},
 		{"draft", {number(&CharpyParameters::hammer_draft_m), "M  striker nose, default 0.04"}},
-		{"release-angle", {number(&CharpyParameters::release_angle_rad), "RAD  from hanging, default 2.8"}},
-		{"initial-energy", {number(&CharpyParameters::initial_energy_j), "J  hammer energy, overrides --release-angle"}},
+		{"impact-speed", {number(&CharpyParameters::impact_speed_m_s), "M_S  striker speed at impact, 0 = from --release-angle (default)"}},
+		{"release-angle", {[](CharpyParameters& p, const std::string& text) {
+							   p.impact_speed_m_s = 0;  // the hammer starts from this angle instead
+							   return parseNumber(text, p.release_angle_rad);
+						   },
+						   "RAD  release from this angle (instead of --impact-speed), default 2.8"}},
+		{"initial-energy", {number(&CharpyParameters::initial_energy_j), "J  hammer energy, overrides --impact-speed and --release-angle"}},
 		{"brittle-force", {number(&CharpyParameters::brittle_breaking_force_n), "N  breaking force of method brittle, default 2e4"}},
 		{"frequency-ratio", {number(&CharpyParameters::frequency_ratio), "STEPS  per period for elastic DOFs, default 25"}},
 	};
@@ -77,6 +83,21 @@ const std::map<std::string, std::pair<Setter, const char*>>& valueFlags()
 CharpyCommandLine parseCharpyCommandLine(const std::vector<std::string>& arguments)
 {
 	CharpyCommandLine cl;
+	// --geometry sets several parameters; it is applied first so that other flags refine it in any order
+	for (const std::string& argument : arguments)
+	{
+		if (argument.rfind("--geometry=", 0) != 0)
+		{
+			continue;
+		}
+		const std::string value = argument.substr(11);
+		if (value == "thesis")
+			applyThesisGeometry(cl.parameters);
+		else if (value == "standard")
+			applyStandardGeometry(cl.parameters);
+		else
+			cl.errors.push_back("--geometry: '" + value + "' is not valid; expected standard or thesis");
+	}
 	for (const std::string& argument : arguments)
 	{
 		if (argument.rfind("--", 0) != 0)
@@ -108,6 +129,11 @@ CharpyCommandLine parseCharpyCommandLine(const std::vector<std::string>& argumen
 			flagWithoutValue(cl.json);
 		else if (name == "auto-dt")
 			flagWithoutValue(cl.parameters.auto_dt);
+		else if (name == "geometry")
+		{
+			if (!hasValue)
+				cl.errors.push_back("--geometry needs a value: --geometry=standard|thesis");
+		}
 		else if (name == "history")
 		{
 			if (!hasValue || value.empty())
@@ -145,8 +171,10 @@ CharpyCommandLine parseCharpyCommandLine(const std::vector<std::string>& argumen
 std::string charpyUsage()
 {
 	std::string text =
-		"usage: charpy [--method=NAME] [--json] [--history=FILE.csv] [--auto-dt] [--list-methods] [flags]\n"
-		"Runs the Charpy impact test scene headless and prints the energy balance.\n";
+		"usage: charpy [--method=NAME] [--geometry=standard|thesis] [--json] [--history=FILE.csv] [--auto-dt] [--list-methods] [flags]\n"
+		"Runs the Charpy impact test scene headless and prints the energy balance.\n"
+		"  --geometry=thesis    (default) the thesis' scene: a flat striker nose as thick as the hammer, released from 2.8 rad\n"
+		"  --geometry=standard  the standard machine's striker (ISO 148-1): a 2 mm edge at mid-span, 5.2 m/s\n";
 	for (const auto& [name, flag] : valueFlags())
 	{
 		text += "  --" + name + "=" + flag.second + "\n";

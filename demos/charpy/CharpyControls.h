@@ -11,6 +11,7 @@ struct CharpyControls
 	btScalar yieldStress_MPa = 400;
 	btScalar friction = 0;
 	btScalar releaseAngle_rad = btScalar(2.8);
+	btScalar strikerRadius_mm = 0;
 	btScalar maxPlasticRotation_rad = 3;
 	btScalar frameStep_ms = btScalar(0.1);
 	btScalar solverIterations = 10;
@@ -30,7 +31,7 @@ struct CharpySlider
 	float max;
 	bool integers;
 };
-constexpr int kCharpySliderCount = 8;
+constexpr int kCharpySliderCount = 9;
 extern const CharpySlider kCharpySliders[kCharpySliderCount];
 
 // The scene parameters of the controls for a method; the rest stays at CharpyParameters' defaults.

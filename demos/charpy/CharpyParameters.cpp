@@ -18,6 +18,19 @@ void requireRange(std::vector<std::string>& errors, const char* name, double val
 }
 }  // namespace
 
+void applyStandardGeometry(CharpyParameters& p)
+{
+	p.striker_radius_m = 0.002;
+	p.impact_speed_m_s = 5.2;
+}
+
+void applyThesisGeometry(CharpyParameters& p)
+{
+	p.striker_radius_m = 0;
+	p.impact_speed_m_s = 0;
+	p.release_angle_rad = 2.8;
+}
+
 std::vector<std::string> validateCharpyParameters(const CharpyParameters& p)
 {
 	std::vector<std::string> errors;
@@ -41,6 +54,15 @@ std::vector<std::string> validateCharpyParameters(const CharpyParameters& p)
 	requireRange(errors, "hammer-height", p.hammer_height_m, 0.01, 10, true, "m");
 	requireRange(errors, "hammer-thickness", p.hammer_thickness_m, 0, p.anvil_gap_m * 0.9, true, "m (0 = no hammer; below 0.9 x anvil-gap)");
 	requireRange(errors, "draft", p.hammer_draft_m, 0, 1, true, "m");
+	requireRange(errors, "striker-radius", p.striker_radius_m, 0, p.hammer_thickness_m / 2, true,
+				 "m (0 = flat nose; up to hammer-thickness / 2)");
+	if (p.striker_radius_m > 0 && !(p.hammer_draft_m >= 2 * p.striker_radius_m))
+	{
+		std::ostringstream out;
+		out << "draft: " << p.hammer_draft_m << " is not in [2 x striker-radius = " << 2 * p.striker_radius_m << ", 1] m";
+		errors.push_back(out.str());
+	}
+	requireRange(errors, "impact-speed", p.impact_speed_m_s, 0, 100, true, "m/s (0 = from release-angle)");
 	requireRange(errors, "arm-length", p.hammer_arm_length_m, 0.05, 10, true, "m");
 	requireRange(errors, "release-angle", p.release_angle_rad, 0, 3.1, true, "rad");
 	requireRange(errors, "initial-energy", p.initial_energy_j, 0, 1e6, true, "J (0 = use release-angle)");

@@ -25,7 +25,8 @@ struct CharpyParameters
 	double specimen_bottom_y_m = 0.2;
 	int parts = 2;  // even: a joint sits at the notch (method rigid uses one body)
 
-	// anvils
+	// anvils: 40 mm apart as in ISO 148-1; their edges are sharp (the standard rounds them to 1 mm and tapers the gap
+	// by 11 degrees: with rounded edges Bullet's contacts were erratic, see CHANGES.md 0.3.0)
 	double anvil_gap_m = 0.040;    // open space between the anvils along Z
 	double anvil_width_m = 0.040;  // each anvil along Z
 
@@ -35,9 +36,13 @@ struct CharpyParameters
 	double hammer_height_m = 0.25;      // head along Y
 	double hammer_thickness_m = 0.02;   // head along Z; 0 = no hammer in the scene
 	double hammer_draft_m = 0.04;       // striker nose in front of the head (collision only, like the arm)
+	double striker_radius_m = 0.0;      // 0 = the thesis' flat nose, a box as thick as the hammer; > 0: the standard's
+	                                    // striker, an edge rounded to this radius (ISO 148-1: 2 mm), a capsule along Y
+	                                    // at mid-span
 	double hammer_arm_length_m = 0.5;   // 40 x 40 mm arm from the head to the pivot (collision only)
+	double impact_speed_m_s = 0.0;      // striker speed at impact (ISO 148-1: 5.0 to 5.5 m/s); 0 = from release_angle_rad
 	double release_angle_rad = 2.8;     // pendulum angle from hanging at which the hammer is released at rest
-	double initial_energy_j = 0.0;      // if > 0: hammer energy above the hanging position, overrides release_angle_rad
+	double initial_energy_j = 0.0;      // if > 0: hammer energy above the hanging position, overrides the two above
 
 	// stepping
 	double dt_s = 1e-4;                  // frame step
@@ -53,6 +58,12 @@ struct CharpyParameters
 	// elastic-plastic methods: spring steps per natural period below which a DOF is rigid-plastic
 	double frequency_ratio = 25.0;
 };
+
+// The defaults are the thesis' scene (section 2.2): a flat striker nose as thick as the hammer, the hammer
+// released from 2.8 rad (4.4 m/s at impact). The standard machine's striker (ISO 148-1, ASTM E23): a 2 mm edge
+// that loads mid-span, 5.2 m/s at impact.
+void applyStandardGeometry(CharpyParameters& parameters);
+void applyThesisGeometry(CharpyParameters& parameters);
 
 // Every violated constraint as "parameter: value is not in range" text; empty when valid.
 std::vector<std::string> validateCharpyParameters(const CharpyParameters& parameters);

@@ -24,6 +24,8 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	r.theta_pass_rad = scene.section().theta_pass_rad;
 	r.plastic_moment_Nm = scene.section().plastic_moment_nm;
 	r.impact_speed_m_s = scene.impactSpeed_m_s();
+	r.friction = parameters.friction;
+	r.striker_radius_m = parameters.striker_radius_m;
 	if (history)
 	{
 		*history << "time_s,potential_J,kinetic_J,elastic_J,total_J,plastic_work_J,bend_angle_rad,hammer_angle_rad\n";
@@ -98,6 +100,8 @@ std::string toJson(const CharpyResult& r)
 		<< ",\"error_pct\":" << number(r.error_pct) << ",\"plastic_rotation_rad\":" << number(r.plastic_rotation_rad)
 		<< ",\"bend_angle_rad\":" << number(r.bend_angle_rad)
 		<< ",\"end_bend_angle_rad\":" << number(r.end_bend_angle_rad) << ",\"impact_speed_m_s\":" << number(r.impact_speed_m_s)
+		<< ",\"friction\":" << number(r.friction) << ",\"striker_radius_m\":" << number(r.striker_radius_m)
+		<< ",\"anvil_edge_radius_m\":0"
 		<< ",\"broken\":" << flag(r.broken) << ",\"passed_anvils\":" << flag(r.passed_anvils) << ",\"over_the_top\":" << flag(r.over_the_top)
 		<< ",\"max_bend_rad\":" << number(r.max_bend_rad) << ",\"tunnelled\":" << flag(r.tunnelled) << ",\"finite\":" << flag(r.finite)
 		<< ",\"max_energy_gain_J\":" << number(r.max_energy_gain_J) << ",\"max_penetration_m\":" << number(r.max_penetration_m)

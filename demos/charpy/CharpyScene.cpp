@@ -354,7 +354,19 @@ void CharpyScene::createHammer()
 	head->setMargin(btScalar(0.001));
 	compound->addChildShape(translation(0, 0, 0), head);
 	m_impl->shapes.push_back(head);
-	if (p.hammer_draft_m > 0)
+	if (p.hammer_draft_m > 0 && p.striker_radius_m > 0)
+	{
+		// the standard's striker: an edge rounded to striker_radius_m along Y at mid-span (a capsule), carried by
+		// a blade thinner than the edge
+		const double r = p.striker_radius_m;
+		btBoxShape* blade = m_impl->box((p.hammer_draft_m - r) / 2.0, kNoseHeight_m / 2.0, r / 2.0);
+		compound->addChildShape(translation(-(L / 2.0 + (p.hammer_draft_m - r) / 2.0), 0, 0), blade);
+		m_impl->shapes.push_back(blade);
+		auto* edge = new btCapsuleShape(btScalar(r), btScalar(kNoseHeight_m));
+		compound->addChildShape(translation(-(L / 2.0 + p.hammer_draft_m - r), 0, 0), edge);
+		m_impl->shapes.push_back(edge);
+	}
+	else if (p.hammer_draft_m > 0)
 	{
 		btBoxShape* nose = m_impl->box(p.hammer_draft_m / 2.0, kNoseHeight_m / 2.0, T / 2.0);
 		compound->addChildShape(translation(-(L / 2.0 + p.hammer_draft_m / 2.0), 0, 0), nose);
@@ -389,8 +401,18 @@ void CharpyScene::createHammer()
 	const btVector3 comOffset = start.getOrigin() - pivot;  // pivot -> centre of mass
 	const double Rc = comOffset.length();
 	const double m = p.hammer_mass_kg;
-	const double releaseEnergy = p.initial_energy_j > 0 ? p.initial_energy_j : m * kGravity_m_s2 * Rc * (1.0 - std::cos(p.release_angle_rad));
+	const double inertiaAboutPivot = inertia.z() + m * Rc * Rc;
 	const double heightAboveRest = comOffset.y() + Rc;
+	double releaseEnergy = m * kGravity_m_s2 * Rc * (1.0 - std::cos(p.release_angle_rad));
+	if (p.initial_energy_j > 0)
+	{
+		releaseEnergy = p.initial_energy_j;
+	}
+	else if (p.impact_speed_m_s > 0)
+	{
+		const double omegaAtStart = p.impact_speed_m_s / armDrop;  // kStartGap_m before the impact
+		releaseEnergy = 0.5 * inertiaAboutPivot * omegaAtStart * omegaAtStart + m * kGravity_m_s2 * heightAboveRest;
+	}
 	const double kinetic = releaseEnergy - m * kGravity_m_s2 * heightAboveRest;
 	if (!(kinetic > 0))
 	{
@@ -398,7 +420,6 @@ void CharpyScene::createHammer()
 									std::to_string(releaseEnergy) + " J, needs more than " +
 									std::to_string(m * kGravity_m_s2 * heightAboveRest) + " J)");
 	}
-	const double inertiaAboutPivot = inertia.z() + m * Rc * Rc;
 	const double omega = std::sqrt(2.0 * kinetic / inertiaAboutPivot);
 	// swing towards -X: negative rotation about +Z
 	const btVector3 angularVelocity(0, 0, btScalar(-omega));

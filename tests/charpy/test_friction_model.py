@@ -1,0 +1,68 @@
+#!/usr/bin/env python3
+"""The standard striker with friction against the quasi-static rigid-plastic model (issue 14 part 1).
+
+Usage: python3 test_friction_model.py RUNNER  (the charpy console runner)
+"""
+import json
+import os
+import subprocess
+import sys
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+CI = os.path.join(HERE, "..", "..", "ci")
+sys.path.insert(0, CI)
+from charpy_friction_model import CharpyFrictionModel, STANDARD  # noqa: E402
+
+RUNNER = None
+
+
+def run(*flags):
+    out = subprocess.run([RUNNER, "--method=plastic-hinge", "--json"] + list(flags), check=True,
+                         capture_output=True, text=True).stdout
+    return json.loads(out)
+
+
+class FrictionModelTest(unittest.TestCase):
+    def test_model_without_friction_is_the_plastic_work_of_the_runners_pass_angle(self):
+        # two independent derivations: the model integrates the hammer force over the striker's travel, the
+        # runner's CharpySection bisects the pass angle
+        r = run("--geometry=standard")
+        loss, lock = CharpyFrictionModel(**STANDARD).loss(0.0)
+        self.assertIsNone(lock)
+        self.assertAlmostEqual(loss / r["analytic_J"], 1.0, delta=1e-3)
+
+    def test_friction_costs_more_the_more_there_is_and_locks_at_last(self):
+        model = CharpyFrictionModel(**STANDARD)
+        losses = [model.loss(mu)[0] for mu in (0.0, 0.05, 0.1, 0.25)]
+        self.assertEqual(losses, sorted(losses))
+        self.assertGreater(losses[-1], losses[0] * 1.3)
+        self.assertIsNotNone(model.loss(0.6)[1], "a friction of 0.6 self-locks the contacts")
+
+    def test_runner_loss_is_within_3_percent_of_the_model_and_the_specimen_passes(self):
+        model = CharpyFrictionModel(**STANDARD)
+        for mu in (0.05, 0.1, 0.25):
+            with self.subTest(mu=mu):
+                r = run("--geometry=standard", f"--friction={mu}")
+                expected, _ = model.loss(mu)
+                self.assertTrue(r["passed_anvils"] and not r["over_the_top"], r)
+                self.assertLess(abs(r["energy_loss_J"] - expected) / expected, 0.03, (mu, r["energy_loss_J"], expected))
+
+    def test_the_thesis_flat_nose_jams_where_the_standard_striker_does_not(self):
+        flat = run("--geometry=thesis", "--friction=0.1")
+        edge = run("--geometry=standard", "--friction=0.1")
+        self.assertFalse(flat["passed_anvils"] and not flat["over_the_top"])
+        self.assertTrue(edge["passed_anvils"])
+
+    def test_bad_model_input_names_the_parameter(self):
+        with self.assertRaisesRegex(ValueError, "gap"):
+            CharpyFrictionModel(**dict(STANDARD, gap_m=0.06))
+        out = subprocess.run([sys.executable, os.path.join(CI, "charpy_friction_model.py"), "--mu=-1"],
+                             capture_output=True, text=True)
+        self.assertEqual(out.returncode, 2)
+        self.assertIn("mu", out.stderr)
+
+
+if __name__ == "__main__":
+    RUNNER = sys.argv.pop(1)
+    unittest.main(verbosity=2)
