@@ -233,6 +233,8 @@ def run(p):
 
     mp, d, theta_pass, analytic = section(p)
     arm_drop, _, inertia_pivot, start_angle, _ = hammer_geometry(p)
+    messages = []  # MuJoCo's warnings (it would print them and write MUJOCO_LOG.TXT into the working directory)
+    mujoco.set_mju_user_warning(messages.append)
     t0 = time.perf_counter()
     xml, start = model_xml(p)
     model = mujoco.MjModel.from_xml_string(xml)
@@ -306,6 +308,7 @@ def run(p):
         "passed_anvils": all(passed),
         "over_the_top": over_top,
         "diverged": diverged,
+        "mujoco_warning": messages[0].strip() if messages else "",
         "max_penetration_m": max_pen,
         "finite": finite,
     }
