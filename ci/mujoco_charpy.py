@@ -16,7 +16,8 @@ edge radius, impact speed 5.25 m/s (the standard's 5.0-5.5 m/s). Axes as in our 
 Where the parameters come from, each later source overriding the earlier: the defaults above; the
 runner's --json output (--from-runner runs it with its defaults, --from-json reads a saved one or a
 parameter dump: a JSON object whose keys are parameter names, or the runner's own keys plastic_moment_Nm
-and impact_speed_m_s); the --NAME=VALUE flags. --list-parameters prints them all with units.
+and impact_speed_m_s; other keys are ignored, and so are the stepping ones, dt_s and iterations); the
+--NAME=VALUE flags. --list-parameters prints them all with units.
 
 Contacts are as close to our scene's as MuJoCo allows: frictionless (condim 1) unless --friction > 0,
 inelastic (critically damped, dampratio 1), as stiff as MuJoCo lets a step be (time constant 2 steps,
@@ -72,6 +73,8 @@ START_GAP_M = 0.003       # like kStartGap_m in CharpyScene.cpp
 NOSE_HEIGHT_M = 0.02      # striker along Y, like kNoseHeight_m
 ANVIL_DEPTH_M = 0.04      # anvils along X, like kAnvilDepth_m
 # the runner's --json keys that are parameters under another name
+# the stepping is the peer's own: a runner's frame step and solver iterations are not taken from its JSON
+STEPPING = ("dt_s", "iterations")
 RUNNER_KEYS = {"plastic_moment_Nm": "plastic_moment_nm", "impact_speed_m_s": "impact_speed_m_s", "dt": "dt_s"}
 
 
@@ -322,9 +325,12 @@ def from_runner_json(p, result):
     taken = []
     for key, value in result.items():
         name = RUNNER_KEYS.get(key, key)
-        if name in PARAMETERS and name != "dt_s" and isinstance(value, (int, float)) and not isinstance(value, bool):
-            set_parameter(p, name, value)
-            taken.append(name)
+        if name not in PARAMETERS or name in STEPPING:
+            continue
+        if isinstance(value, bool) or value is None:
+            raise ParameterError(f"{name}: '{value}' is not a number")
+        set_parameter(p, name, value)
+        taken.append(name)
     return taken
 
 
