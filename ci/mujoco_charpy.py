@@ -314,6 +314,7 @@ def run(p):
         "mujoco_warning": messages[0].strip() if messages else "",
         "max_penetration_m": max_pen,
         "finite": finite,
+        **{k: p[k] for k in ("friction", "striker_radius_m", "anvil_gap_m", "anvil_edge_radius_m", "hammer_mass_kg")},
     }
 
 

@@ -56,6 +56,7 @@ def section(peer, ours):
     analytic = number(peer[0], "analytic_J")
     our_analytic = next((number(r, "analytic_J") for r in ours if number(r, "analytic_J")), None)
     f = lambda v, pattern: "" if v is None else pattern.format(v)  # noqa: E731
+    mm = lambda column: f(1000 * number(peer[0], column) if number(peer[0], column) is not None else None, "{:g}")  # noqa: E731
     pick = lambda dt, sub: next((r for r in ours if r.get("method") == "plastic-hinge" and r.get("dt_ms") == dt  # noqa: E731
                                  and r.get("iterations") == "10" and r.get("contact_substep_s") == sub), None)
     lines = ["| frame step [ms] | peer loss [J] | peer hinge work [J] | peer error vs analytic [%] | peer discretisation error [%] "
@@ -84,10 +85,11 @@ def section(peer, ours):
 
 The same Charpy test in MuJoCo (`ci/mujoco_charpy.py`, swept by `ci/peer_sweep.py` into `charpy-peer.csv`, parameters
 from {peer[0].get('parameters_from', '?')}): two rigid halves joined at the notch by a hinge whose `frictionloss` is
-Mp = {f(number(peer[0], 'plastic_moment_Nm'), '{:.2f}')} N m, a striker edge of {f(1000 * (number(peer[0], 'striker_radius_m') or 0.002), '{:g}')} mm radius,
-anvil edges of 1 mm radius, impact speed {f(number(peer[0], 'impact_speed_m_s'), '{:.2f}')} m/s; frictionless, inelastic contacts as stiff as
-MuJoCo allows (time constant 2 steps). MuJoCo's timestep is the frame step (no contact substeps). Its analytic Mp * theta_pass
-with the rounded anvil edges is {f(analytic, '{:.2f}')} J (theta_pass {f(number(peer[0], 'theta_pass_rad'), '{:.4f}')} rad). Converged run
+Mp = {f(number(peer[0], 'plastic_moment_Nm'), '{:.2f}')} N m, a striker edge of {mm('striker_radius_m')} mm radius, anvils
+{mm('anvil_gap_m')} mm apart with edges of {mm('anvil_edge_radius_m')} mm radius, a {f(number(peer[0], 'hammer_mass_kg'), '{:g}')} kg hammer at
+{f(number(peer[0], 'impact_speed_m_s'), '{:.2f}')} m/s; contact friction {f(number(peer[0], 'friction'), '{:g}')}, inelastic contacts as
+stiff as MuJoCo allows (time constant 2 steps). MuJoCo's timestep is the frame step (no contact substeps). Its analytic Mp * theta_pass
+with its anvil edge radius is {f(analytic, '{:.2f}')} J (theta_pass {f(number(peer[0], 'theta_pass_rad'), '{:.4f}')} rad). Converged run
 {ref_text}. Hinge work = Mp * accumulated |hinge rotation|. 50 iterations change the peer's loss by at most
 {max(diffs) if diffs else 0:.2g} J (MuJoCo's solver converges before either cap). Wall time: building the model and all steps, one run
 at a time in one Python process (the MuJoCo call per step included).
