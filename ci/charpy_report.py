@@ -16,6 +16,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sweep import csvfile  # noqa: E402
+import peer_report  # noqa: E402  (the MuJoCo peer's series and section)
 
 import matplotlib  # noqa: E402
 
@@ -73,7 +74,7 @@ def pareto_front(points):
     return front
 
 
-def plot(rows, path, converged):
+def plot(rows, path, converged, peer=()):
     fig, ax = plt.subplots(figsize=(9, 6), dpi=110)
     points = []
     markers = "os^vD<>P"
@@ -88,6 +89,7 @@ def plot(rows, path, converged):
         ax.scatter(t, e, s=22, marker=markers[i % len(markers)], label=method, alpha=0.8)
         if method in PLASTIC_METHODS:
             points += [(ti, ei, r["key"]) for ti, ei, r in zip(t, e, mine)]
+    peer_report.plot_series(ax, peer)
     front = pareto_front(points)
     ax.plot([p[0] for p in front], [p[1] for p in front], "k--", lw=1, label="Pareto front (methods 5-8)")
     ax.set_xscale("log")
@@ -147,11 +149,11 @@ def fmt(value, pattern):
     return "" if value is None else pattern.format(value)
 
 
-def report(rows, out_dir, command, source="the sweep CSV"):
+def report(rows, out_dir, command, source="the sweep CSV", peer=()):
     os.makedirs(out_dir, exist_ok=True)
     png = os.path.join(out_dir, "charpy-error-vs-runtime.png")
     converged = converged_runs(rows)
-    front = plot(rows, png, converged)
+    front = plot(rows, png, converged, peer)
     base = [r for r in rows if r.get("iterations") == DEFAULT_ITERATIONS and r.get("contact_substep_s") == DEFAULT_SUBSTEP]
     double = [r for r in rows if r.get("iterations") == DEFAULT_ITERATIONS and r.get("contact_substep_s") == "2e-05"]
     nosub = [r for r in rows if r.get("iterations") == DEFAULT_ITERATIONS and r.get("contact_substep_s") == "0"]
@@ -194,7 +196,7 @@ Pareto front (fastest run for each level of discretisation error, methods 5-8):
 
 | run | wall time [s] | abs discretisation error [%] |
 |---|---|---|
-""" + "\n".join(f"| `{k}` | {t:.4f} | {e:.2f} |" for t, e, k in front) + f"""
+""" + "\n".join(f"| `{k}` | {t:.4f} | {e:.2f} |" for t, e, k in front) + peer_report.section(peer, rows) + f"""
 
 ## Convergence of the contact substep (10 iterations, frame step 0.1 ms)
 
@@ -253,11 +255,13 @@ def main(argv=None):
     parser.add_argument("--csv", default="report/charpy-sweep.csv")
     parser.add_argument("--out-dir", default="report")
     parser.add_argument("--command", default="bash ci/report.sh")
+    parser.add_argument("--peer-csv", help="the MuJoCo peer's runs (ci/peer_sweep.py), if there; default charpy-peer.csv beside --csv")
     args = parser.parse_args(argv)
     rows = csvfile.read_rows(args.csv)
     if not rows:
         raise SystemExit(f"{args.csv}: no rows (run ci/charpy_sweep.py first)")
-    path, png = report(rows, args.out_dir, args.command, os.path.basename(args.csv))
+    path, png = report(rows, args.out_dir, args.command, os.path.basename(args.csv),
+                       peer_report.read(args.peer_csv or os.path.join(os.path.dirname(args.csv), "charpy-peer.csv")))
     print(f"wrote {path} and {png}")
     return 0
 
