@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs what the build and tests need on Debian bookworm (run as root), skipping what is there.
 set -euo pipefail
-packages=(cmake ninja-build pkg-config quilt g++ python3 python3-pip libgtest-dev libbenchmark-dev clang-format
+packages=(cmake ninja-build pkg-config quilt g++ python3 python3-pip python3-venv libgtest-dev libbenchmark-dev clang-format
 	libosmesa6-dev libgl-dev mesa-common-dev)
 missing=()
 for p in "${packages[@]}"; do
