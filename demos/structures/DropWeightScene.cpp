@@ -110,6 +110,12 @@ DropWeightResult runDropWeight(const DropWeightParameters& p)
 	});
 	auto site = [&](size_t i) { return angles[i + 1].angle_rad() - angles[i].angle_rad(); };
 	const size_t sites = angles.size() - 1, mid = size_t(p.segments / 2);
+	auto geometricPlasticWork = [&] {
+		double w = 0;
+		for (size_t i = 0; i < sites; i++)
+			if (p.clamped || (i != 0 && i + 1 != sites)) w += mp * std::fabs(site(i));
+		return w;
+	};
 	btRigidBody& leftHalfEnd = *segments[mid - 1];
 	const btVector3 midLocal(0, 0, btScalar(beam.segmentLength_m() / 2));
 	r.kinetic_after_impact_j = std::numeric_limits<double>::quiet_NaN();
@@ -124,12 +130,14 @@ DropWeightResult runDropWeight(const DropWeightParameters& p)
 			break;
 		}
 		const double midspanVelocity = leftHalfEnd.getVelocityInLocalPoint(leftHalfEnd.getWorldTransform().getBasis() * midLocal).y();
+		// what the hinges have to absorb once the ball and the middle move together: the kinetic energy then, plus
+		// what the hinges took during the impact
 		if (std::isnan(r.kinetic_after_impact_j) && std::fabs(ball.getLinearVelocity().y() - midspanVelocity) < 0.01 * p.impact_speed_m_s)
-			r.kinetic_after_impact_j = kinetic;
+			r.kinetic_after_impact_j = kinetic + geometricPlasticWork();
 		const double midspan = site(mid);
 		deepest = std::max(deepest, midspan);
-		// stopped: (almost) no kinetic energy left, or the middle springs back
-		if (!std::isnan(r.kinetic_after_impact_j) && (kinetic < 1e-4 * r.answer.initial_kinetic_j || midspan < deepest - 1e-3)) break;
+		// stopped: the middle no longer moves (the ball may drift off), or it springs back
+		if (!std::isnan(r.kinetic_after_impact_j) && midspan > 0 && (std::fabs(midspanVelocity) < 1e-3 * p.impact_speed_m_s || midspan < deepest - 1e-3)) break;
 	}
 	r.midspan_rotation_rad = site(mid);
 	r.left_support_rotation_rad = -site(0);
@@ -137,8 +145,7 @@ DropWeightResult runDropWeight(const DropWeightParameters& p)
 	for (size_t i = 1; i + 1 < sites; i++)
 		if (i != mid) r.max_inner_rotation_rad = std::max(r.max_inner_rotation_rad, std::fabs(site(i)));
 	r.kinetic_end_j = ledger.measure().kinetic_j;
-	for (size_t i = 0; i < sites; i++)
-		if (p.clamped || (i != 0 && i + 1 != sites)) r.geometric_plastic_work_j += mp * std::fabs(site(i));
+	r.geometric_plastic_work_j = geometricPlasticWork();
 	r.booked_plastic_work_j = beam.plasticWork_j() + rightClamp.plasticWork_j();
 	const DropWeightAnswer& a = r.answer;
 	r.midspan_error_pct = 100 * (r.midspan_rotation_rad - a.midspan_rotation_rad) / a.midspan_rotation_rad;
