@@ -26,7 +26,7 @@ struct CantileverParameters
 	// ramp_rate_per_s > 0: the load ratio P L / Mp rises at fast_ramp_rate_per_s up to slow_from_fraction of
 	// the plastic-analysis collapse ratio, then at ramp_rate_per_s, until a joint turns faster than
 	// collapse_rate_rad_s (over rate_window_s); then it is held until the mechanism has turned
-	// mechanism_rotation_rad. 0: the load ratio is load_ratio from the start.
+	// mechanism_rotation_rad (else, after hold_s, the ramp resumes). 0: the load ratio is load_ratio from the start.
 	double load_ratio = 1.5;
 	double ramp_rate_per_s = 0;
 	double fast_ramp_rate_per_s = 0.2;
@@ -34,6 +34,7 @@ struct CantileverParameters
 	double collapse_rate_rad_s = 0.05;
 	double rate_window_s = 0.1;
 	double mechanism_rotation_rad = 0.05;
+	double hold_s = 2.0;  // a held load that has not turned the mechanism that far by then is raised again
 	double duration_s = 30.0;  // at most; a constant dead load stops when the beam has stopped
 };
 
@@ -59,6 +60,7 @@ struct CantileverResult
 	double geometric_plastic_work_j = 0;  // Mp x the sum of |joint rotations| measured from the bodies
 	double booked_plastic_work_j = 0;  // what the joints booked (0 for the hinge-motor stand-in)
 	double energy_balance_error_pct = 0;  // (load work - kinetic - geometric plastic work) / load work
+	int holds = 0;  // ramp: how many times the load was held (more than one: softening or vibration was not a collapse)
 	long steps = 0;
 	double simulated_s = 0;
 	double wall_s = 0;

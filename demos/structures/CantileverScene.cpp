@@ -6,10 +6,9 @@
 #include <memory>
 
 #include "BeamBuilder.h"
-#include "CollapseDetector.h"
 #include "Cantilever.h"
 #include "EnergyLedger.h"
-#include "LoadRamp.h"
+#include "CollapseTest.h"
 #include "Measures.h"
 
 namespace structures
@@ -38,8 +37,8 @@ CantileverResult runCantilever(const CantileverParameters& p)
 	// the segment's local z is the member axis: the tip is half a segment out
 	ScaledLoad load(*tip, btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, btScalar(-r.answer.collapse_load_n), 0), p.follower_load);
 	const bool ramp = p.ramp_rate_per_s > 0;
-	LoadRamp ramper(p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * r.answer.collapse_ratio);
-	CollapseDetector detector(p.collapse_rate_rad_s, p.rate_window_s);
+	CollapseTest test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * r.answer.collapse_ratio, p.collapse_rate_rad_s,
+					   p.rate_window_s, p.mechanism_rotation_rad, p.hold_s});
 	load.setFactor(ramp ? 0.0 : p.load_ratio);
 	std::vector<PlanarAngle> angles;  // the ground, then each segment
 	angles.emplace_back(nullptr);
@@ -50,8 +49,8 @@ CantileverResult runCantilever(const CantileverParameters& p)
 	rig.beforeEachStep([&](double step_s) {
 		if (ramp)
 		{
-			ramper.advance(step_s);
-			load.setFactor(ramper.factor());
+			test.advance(step_s);
+			load.setFactor(test.factor());
 		}
 		load.apply();
 		beam.updateForStep(step_s);
@@ -61,7 +60,6 @@ CantileverResult runCantilever(const CantileverParameters& p)
 		for (PlanarAngle& a : angles) a.update();
 	});
 	auto jointRotation = [&](size_t j) { return angles[j + 1].angle_rad() - angles[j].angle_rad(); };
-	r.collapse_ratio = std::numeric_limits<double>::quiet_NaN();
 	r.stop_rotation_rad = std::numeric_limits<double>::quiet_NaN();
 	double maxKinetic = 0;
 	while (rig.time_s() < p.duration_s - 1e-12)
@@ -79,17 +77,11 @@ CantileverResult runCantilever(const CantileverParameters& p)
 		{
 			std::vector<double> rotations;
 			for (size_t j = 0; j < beam.joints().size(); j++) rotations.push_back(jointRotation(j));
-			if (detector.feed(rig.time_s(), rotations))
+			test.update(rig.time_s(), rotations);
+			if (test.done())
 			{
-				r.collapse_ratio = ramper.factor();
-				ramper.hold();
-			}
-			if (detector.collapsed())
-			{
-				double largest = 0;
-				for (double d : detector.sinceCollapse(rotations)) largest = std::max(largest, std::fabs(d));
-				r.mechanism = detector.mechanism(rotations);
-				if (largest > p.mechanism_rotation_rad) break;  // the mechanism has shown itself
+				r.mechanism = test.mechanism(rotations);
+				break;
 			}
 		}
 		else if (!p.follower_load && p.load_ratio > 1)
@@ -104,6 +96,8 @@ CantileverResult runCantilever(const CantileverParameters& p)
 			}
 		}
 	}
+	r.collapse_ratio = test.collapseFactor();
+	r.holds = test.holds();
 	r.root_rotation_rad = -jointRotation(0);
 	r.load_work_j = load.work_j();
 	r.kinetic_j = ledger.measure().kinetic_j;

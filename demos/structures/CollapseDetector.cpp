@@ -5,16 +5,21 @@
 
 namespace structures
 {
-bool CollapseDetector::feed(double time_s, const std::vector<double>& rotations)
+bool CollapseDetector::feed(double time_s, const std::vector<double>& rotations, double rateScale)
 {
 	if (m_collapsed) return false;
+	if (rateScale != m_scale)
+	{
+		m_history.clear();
+		m_scale = rateScale;
+	}
 	m_history.emplace_back(time_s, rotations);
 	while (m_history.size() > 2 && m_history[1].first <= time_s - m_window) m_history.pop_front();
 	const auto& [then_s, before] = m_history.front();
 	if (time_s - then_s < m_window * 0.999) return false;
 	for (size_t i = 0; i < rotations.size(); i++)
 	{
-		if (std::fabs(rotations[i] - before[i]) > m_rate * (time_s - then_s))
+		if (std::fabs(rotations[i] - before[i]) > m_rate * m_scale * (time_s - then_s))
 		{
 			m_collapsed = true;
 			m_atCollapse = rotations;

@@ -15,6 +15,9 @@ public:
 		m_factor += (m_factor < m_slowFrom ? m_fast : m_slow) * step_s;
 	}
 	void hold() { m_held = true; }
+	void resume() { m_held = false; }
+	// how much faster the load rises now than in the slow part (1 once held or slow)
+	double speedRatio() const { return !m_held && m_factor < m_slowFrom ? m_fast / m_slow : 1.0; }
 	bool held() const { return m_held; }
 
 private:

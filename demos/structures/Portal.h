@@ -29,13 +29,14 @@ struct PortalParameters
 	double vertical_load_n = 75e3;    // V at lambda = 1: V L / 2 = 3 Mp: the combined mechanism at lambda = 1
 	// the load factor rises at fast_ramp_rate_per_s up to slow_from_fraction of the plastic-analysis collapse
 	// factor, then at ramp_rate_per_s, until a joint turns faster than collapse_rate_rad_s (over rate_window_s);
-	// then it is held until the mechanism has turned mechanism_rotation_rad
+	// then it is held: a collapse if the mechanism turns mechanism_rotation_rad within hold_s, else the ramp resumes
 	double ramp_rate_per_s = 0.02;
 	double fast_ramp_rate_per_s = 0.2;
 	double slow_from_fraction = 0.9;
 	double collapse_rate_rad_s = 0.05;
 	double rate_window_s = 0.1;
 	double mechanism_rotation_rad = 0.05;
+	double hold_s = 2.0;  // a held load that has not turned the mechanism that far by then is raised again
 	double duration_s = 60.0;  // at most
 };
 
@@ -74,6 +75,7 @@ struct PortalResult
 	double kinetic_j = 0;
 	double booked_plastic_work_j = 0;
 	double geometric_plastic_work_j = 0;  // Mp x sum |site rotation| from the bodies
+	int holds = 0;  // ramp: how many times the load was held (more than one: softening or vibration was not a collapse)
 	long steps = 0;
 	double simulated_s = 0;
 	double wall_s = 0;

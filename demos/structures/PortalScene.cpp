@@ -8,9 +8,8 @@
 #include <memory>
 
 #include "BeamBuilder.h"
-#include "CollapseDetector.h"
 #include "EnergyLedger.h"
-#include "LoadRamp.h"
+#include "CollapseTest.h"
 #include "Measures.h"
 #include "Portal.h"
 
@@ -75,16 +74,16 @@ PortalResult runPortal(const PortalParameters& p)
 	btRigidBody& midBody = *beam.segments()[size_t(p.beam_segments / 2 - 1)];
 	ScaledLoad horizontal(kneeBody, btVector3(0, 0, btScalar(columnLeft.segmentLength_m() / 2)), btVector3(btScalar(p.horizontal_load_n), 0, 0), false);
 	ScaledLoad vertical(midBody, btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, btScalar(-p.vertical_load_n), 0), false);
-	LoadRamp ramp(p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * r.answer.collapse_factor);
-	CollapseDetector detector(p.collapse_rate_rad_s, p.rate_window_s);
+	CollapseTest test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * r.answer.collapse_factor, p.collapse_rate_rad_s,
+					   p.rate_window_s, p.mechanism_rotation_rad, p.hold_s});
 	plastic::EnergyLedger ledger(btVector3(0, 0, 0));
 	for (size_t i = 1; i + 1 < path.size(); i++) ledger.addBody(*path[i]);
 
 	rig.beforeEachStep([&](double step_s) {
-		ramp.advance(step_s);
+		test.advance(step_s);
 		for (ScaledLoad* load : {&horizontal, &vertical})
 		{
-			load->setFactor(ramp.factor());
+			load->setFactor(test.factor());
 			load->apply();
 		}
 		columnLeft.updateForStep(step_s);
@@ -102,7 +101,6 @@ PortalResult runPortal(const PortalParameters& p)
 		for (size_t i = 0; i + 1 < angles.size(); i++) x.push_back(angles[i + 1].angle_rad() - angles[i].angle_rad());
 		return x;
 	};
-	r.collapse_factor = std::numeric_limits<double>::quiet_NaN();
 	while (rig.time_s() < p.duration_s - 1e-12)
 	{
 		rig.step();
@@ -112,22 +110,15 @@ PortalResult runPortal(const PortalParameters& p)
 			r.finite = false;
 			break;
 		}
-		if (detector.feed(rig.time_s(), now))
-		{
-			r.collapse_factor = ramp.factor();
-			ramp.hold();
-		}
-		if (detector.collapsed())
-		{
-			double largest = 0;
-			for (double d : detector.sinceCollapse(now)) largest = std::max(largest, std::fabs(d));
-			if (largest > p.mechanism_rotation_rad) break;
-		}
+		test.update(rig.time_s(), now);
+		if (test.done()) break;
 	}
 	r.rotations_rad = rotations();
-	r.mechanism_rotations_rad = detector.sinceCollapse(r.rotations_rad);
-	r.mechanism_sites = detector.mechanism(r.rotations_rad);
-	r.mechanism_matches = detector.collapsed() && r.mechanism_sites == r.answer.mechanism_sites;
+	r.collapse_factor = test.collapseFactor();
+	r.holds = test.holds();
+	r.mechanism_rotations_rad = test.mechanismRotations(r.rotations_rad);
+	r.mechanism_sites = test.mechanism(r.rotations_rad);
+	r.mechanism_matches = test.done() && r.mechanism_sites == r.answer.mechanism_sites;
 	r.collapse_error_pct = 100.0 * (r.collapse_factor - r.answer.collapse_factor) / r.answer.collapse_factor;
 	r.load_work_j = horizontal.work_j() + vertical.work_j();
 	r.kinetic_j = ledger.measure().kinetic_j;

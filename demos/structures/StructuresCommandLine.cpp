@@ -93,7 +93,8 @@ void addRampFlags(Flags<P>& f, const char* rateHelp)
 	f["slow-from"] = number(&P::slow_from_fraction, "FRACTION  of the plastic-analysis collapse factor where the slow ramp starts, default 0.9");
 	f["collapse-rate"] = number(&P::collapse_rate_rad_s, "RAD_S  a joint turning faster (over --rate-window) is the collapse, default 0.05");
 	f["rate-window"] = number(&P::rate_window_s, "SECONDS  default 0.1");
-	f["mechanism-rotation"] = number(&P::mechanism_rotation_rad, "RAD  run on after the collapse until the mechanism turned this, default 0.05");
+	f["mechanism-rotation"] = number(&P::mechanism_rotation_rad, "RAD  a held load that turns the mechanism this far is the collapse, default 0.05");
+	f["hold"] = number(&P::hold_s, "SECONDS  how long the load is held before it rises again, default 2");
 }
 
 const Flags<CantileverParameters>& cantileverFlags()
