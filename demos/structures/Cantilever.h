@@ -34,33 +34,33 @@ struct CantileverParameters
 	double collapse_rate_rad_s = 0.05;
 	double rate_window_s = 0.1;
 	double mechanism_rotation_rad = 0.05;
-	double hold_s = 2.0;  // a held load that has not turned the mechanism that far by then is raised again
+	double hold_s = 2.0;       // a held load that has not turned the mechanism that far by then is raised again
 	double duration_s = 30.0;  // at most; a constant dead load stops when the beam has stopped
 };
 
 struct CantileverAnswer
 {
 	double plastic_moment_nm = 0;
-	double collapse_load_n = 0;     // Mp / L
-	double collapse_ratio = 1;      // P L / Mp at collapse
-	double stop_rotation_rad = 0;   // constant dead load: where lambda sin(theta) = theta; 0 if it holds; NaN (follower, lambda > 1): never
+	double collapse_load_n = 0;    // Mp / L
+	double collapse_ratio = 1;     // P L / Mp at collapse
+	double stop_rotation_rad = 0;  // constant dead load: where lambda sin(theta) = theta; 0 if it holds; NaN (follower, lambda > 1): never
 };
 
 struct CantileverResult
 {
 	CantileverAnswer answer;
-	double collapse_ratio = 0;         // ramp: the load ratio when the collapse was seen (NaN: never)
-	std::vector<int> mechanism;        // ramp: the joints (0 = root) that turned >= 20 % of the largest rotation after it
-	double root_rotation_rad = 0;      // at the end, measured from the bodies (positive: the tip went down)
+	double collapse_ratio = 0;     // ramp: the load ratio when the collapse was seen (NaN: never)
+	std::vector<int> mechanism;    // ramp: the joints (0 = root) that turned >= 20 % of the largest rotation after it
+	double root_rotation_rad = 0;  // at the end, measured from the bodies (positive: the tip went down)
 	double max_root_rotation_rad = 0;
-	double max_inner_rotation_rad = 0;  // largest |rotation| of any inner joint over the run, from the bodies
-	double stop_rotation_rad = 0;      // root rotation when the beam stopped (constant dead load; NaN: it did not)
-	double load_work_j = 0;            // the load times its point's displacement
-	double kinetic_j = 0;              // from the bodies' velocities, at the end
+	double max_inner_rotation_rad = 0;    // largest |rotation| of any inner joint over the run, from the bodies
+	double stop_rotation_rad = 0;         // root rotation when the beam stopped (constant dead load; NaN: it did not)
+	double load_work_j = 0;               // the load times its point's displacement
+	double kinetic_j = 0;                 // from the bodies' velocities, at the end
 	double geometric_plastic_work_j = 0;  // Mp x the sum of |joint rotations| measured from the bodies
-	double booked_plastic_work_j = 0;  // what the joints booked (0 for the hinge-motor stand-in)
+	double booked_plastic_work_j = 0;     // what the joints booked (0 for the hinge-motor stand-in)
 	double energy_balance_error_pct = 0;  // (load work - kinetic - geometric plastic work) / load work
-	int holds = 0;  // ramp: how many times the load was held (more than one: softening or vibration was not a collapse)
+	int holds = 0;                        // ramp: how many times the load was held (more than one: softening or vibration was not a collapse)
 	long steps = 0;
 	double simulated_s = 0;
 	double wall_s = 0;

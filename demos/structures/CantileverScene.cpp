@@ -46,20 +46,21 @@ CantileverResult runCantilever(const CantileverParameters& p)
 	plastic::EnergyLedger ledger(btVector3(0, 0, 0));
 	for (btRigidBody* b : beam.segments()) ledger.addBody(*b);
 
-	rig.beforeEachStep([&](double step_s) {
+	rig.beforeEachStep([&](double step_s)
+					   {
 		if (ramp)
 		{
 			test.advance(step_s);
 			load.setFactor(test.factor());
 		}
 		load.apply();
-		beam.updateForStep(step_s);
-	});
-	rig.afterEachStep([&] {
+		beam.updateForStep(step_s); });
+	rig.afterEachStep([&]
+					  {
 		load.afterStep();
-		for (PlanarAngle& a : angles) a.update();
-	});
-	auto jointRotation = [&](size_t j) { return angles[j + 1].angle_rad() - angles[j].angle_rad(); };
+		for (PlanarAngle& a : angles) a.update(); });
+	auto jointRotation = [&](size_t j)
+	{ return angles[j + 1].angle_rad() - angles[j].angle_rad(); };
 	r.stop_rotation_rad = std::numeric_limits<double>::quiet_NaN();
 	double maxKinetic = 0;
 	while (rig.time_s() < p.duration_s - 1e-12)

@@ -33,7 +33,7 @@ public:
 	void update(double time_s, const std::vector<double>& rotations_rad);
 	bool done() const { return m_done; }
 	double collapseFactor() const { return m_collapseFactor; }  // NaN until a collapse is confirmed
-	int holds() const { return m_holds; }                        // how many times the load was held
+	int holds() const { return m_holds; }                       // how many times the load was held
 	// the mechanism: rotation of each joint since the (confirmed) hold began, and the joints that turned >= 20 %
 	std::vector<double> mechanismRotations(const std::vector<double>& rotations_rad) const { return m_detector.sinceCollapse(rotations_rad); }
 	std::vector<int> mechanism(const std::vector<double>& rotations_rad) const { return m_detector.mechanism(rotations_rad); }

@@ -36,12 +36,12 @@ struct DropWeightAnswer
 {
 	double plastic_moment_nm = 0;
 	double beam_mass_kg = 0;
-	double effective_mass_kg = 0;      // of the two halves at mid-span, 8 I_half / L^2
-	double initial_kinetic_j = 0;      // G v0^2 / 2
-	double kinetic_after_impact_j = 0; // G / (G + m_eff) of it
-	double half_rotation_rad = 0;      // theta
-	double midspan_rotation_rad = 0;   // 2 theta
-	double support_rotation_rad = 0;   // theta (plastic only when clamped)
+	double effective_mass_kg = 0;       // of the two halves at mid-span, 8 I_half / L^2
+	double initial_kinetic_j = 0;       // G v0^2 / 2
+	double kinetic_after_impact_j = 0;  // G / (G + m_eff) of it
+	double half_rotation_rad = 0;       // theta
+	double midspan_rotation_rad = 0;    // 2 theta
+	double support_rotation_rad = 0;    // theta (plastic only when clamped)
 };
 
 struct DropWeightResult
@@ -55,9 +55,9 @@ struct DropWeightResult
 	double kinetic_end_j = 0;
 	double geometric_plastic_work_j = 0;  // Mp x sum |rotation| of the plastic joints, from the bodies
 	double booked_plastic_work_j = 0;
-	double midspan_error_pct = 0;         // against the estimate
-	double plastic_work_error_pct = 0;    // geometric plastic work against the estimate of the kinetic energy after impact
-	double balance_error_pct = 0;         // (kinetic after impact - kinetic at the end - geometric plastic work) / kinetic after impact
+	double midspan_error_pct = 0;       // against the estimate
+	double plastic_work_error_pct = 0;  // geometric plastic work against the estimate of the kinetic energy after impact
+	double balance_error_pct = 0;       // (kinetic after impact - kinetic at the end - geometric plastic work) / kinetic after impact
 	long steps = 0;
 	double simulated_s = 0;
 	double wall_s = 0;

@@ -101,16 +101,18 @@ DropWeightResult runDropWeight(const DropWeightParameters& p)
 	ledger.addBody(carriage);
 	ledger.addBody(ball);
 
-	rig.beforeEachStep([&](double step_s) {
+	rig.beforeEachStep([&](double step_s)
+					   {
 		beam.updateForStep(step_s);
-		if (p.clamped) plastic::updateJointForStep(*rightClamp.constraint, rightSpec, step_s);
-	});
-	rig.afterEachStep([&] {
-		for (PlanarAngle& a : angles) a.update();
-	});
-	auto site = [&](size_t i) { return angles[i + 1].angle_rad() - angles[i].angle_rad(); };
+		if (p.clamped) plastic::updateJointForStep(*rightClamp.constraint, rightSpec, step_s); });
+	rig.afterEachStep([&]
+					  {
+		for (PlanarAngle& a : angles) a.update(); });
+	auto site = [&](size_t i)
+	{ return angles[i + 1].angle_rad() - angles[i].angle_rad(); };
 	const size_t sites = angles.size() - 1, mid = size_t(p.segments / 2);
-	auto geometricPlasticWork = [&] {
+	auto geometricPlasticWork = [&]
+	{
 		double w = 0;
 		for (size_t i = 0; i < sites; i++)
 			if (p.clamped || (i != 0 && i + 1 != sites)) w += mp * std::fabs(site(i));

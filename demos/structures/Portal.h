@@ -36,7 +36,7 @@ struct PortalParameters
 	double collapse_rate_rad_s = 0.05;
 	double rate_window_s = 0.1;
 	double mechanism_rotation_rad = 0.05;
-	double hold_s = 2.0;  // a held load that has not turned the mechanism that far by then is raised again
+	double hold_s = 2.0;       // a held load that has not turned the mechanism that far by then is raised again
 	double duration_s = 60.0;  // at most
 };
 
@@ -44,7 +44,7 @@ struct PortalParameters
 // joints (mid-span among them), knee-right, the right column's inner joints, base-right.
 struct PortalJointSite
 {
-	std::string name;  // base-left, column-left-1.., knee-left, beam-1.., mid-span, knee-right, column-right-1.., base-right
+	std::string name;          // base-left, column-left-1.., knee-left, beam-1.., mid-span, knee-right, column-right-1.., base-right
 	double beam_rotation = 0;  // in the beam mechanism per unit rotation of its members (counter-clockwise +)
 	double sway_rotation = 0;  // in the sway mechanism
 };
@@ -53,11 +53,11 @@ struct PortalAnswer
 {
 	double plastic_moment_nm = 0;
 	std::vector<PortalJointSite> sites;
-	double beam_factor = 0;      // 4 Mp / (V L / 2) (infinite without V)
-	double sway_factor = 0;      // 4 Mp / (H h)
-	double combined_factor = 0;  // 6 Mp / (H h + V L / 2)
-	double collapse_factor = 0;  // the least over every mechanism
-	std::string mechanism;       // beam, sway, combined (or combination)
+	double beam_factor = 0;                   // 4 Mp / (V L / 2) (infinite without V)
+	double sway_factor = 0;                   // 4 Mp / (H h)
+	double combined_factor = 0;               // 6 Mp / (H h + V L / 2)
+	double collapse_factor = 0;               // the least over every mechanism
+	std::string mechanism;                    // beam, sway, combined (or combination)
 	std::vector<double> mechanism_rotations;  // per site, in the collapse mechanism, the largest = 1
 	std::vector<int> mechanism_sites;         // the sites that rotate in it
 };
@@ -75,7 +75,7 @@ struct PortalResult
 	double kinetic_j = 0;
 	double booked_plastic_work_j = 0;
 	double geometric_plastic_work_j = 0;  // Mp x sum |site rotation| from the bodies
-	int holds = 0;  // ramp: how many times the load was held (more than one: softening or vibration was not a collapse)
+	int holds = 0;                        // ramp: how many times the load was held (more than one: softening or vibration was not a collapse)
 	long steps = 0;
 	double simulated_s = 0;
 	double wall_s = 0;

@@ -57,7 +57,8 @@ PortalAnswer portalAnswer(const PortalParameters& p)
 	const double beamWork = p.vertical_load_n * p.span_m / 2;  // per unit beam mechanism
 	const double swayWork = p.horizontal_load_n * p.height_m;
 	const double inf = std::numeric_limits<double>::infinity();
-	auto factor = [&](double b, double s) {
+	auto factor = [&](double b, double s)
+	{
 		const double work = b * beamWork + s * swayWork;
 		if (!(work > 1e-12 * (std::fabs(b) + std::fabs(s)) * (beamWork + swayWork))) return inf;
 		double rotation = 0;
@@ -86,7 +87,8 @@ PortalAnswer portalAnswer(const PortalParameters& p)
 			bestS = s;
 		}
 	}
-	a.mechanism = bestS == 0 ? "beam" : bestB == 0 ? "sway" : (bestB == bestS ? "combined" : "combination");
+	a.mechanism = bestS == 0 ? "beam" : bestB == 0 ? "sway"
+												   : (bestB == bestS ? "combined" : "combination");
 	double largest = 0;
 	for (const PortalJointSite& site : a.sites) largest = std::max(largest, std::fabs(bestB * site.beam_rotation + bestS * site.sway_rotation));
 	for (size_t i = 0; i < a.sites.size(); i++)

@@ -79,7 +79,8 @@ PortalResult runPortal(const PortalParameters& p)
 	plastic::EnergyLedger ledger(btVector3(0, 0, 0));
 	for (size_t i = 1; i + 1 < path.size(); i++) ledger.addBody(*path[i]);
 
-	rig.beforeEachStep([&](double step_s) {
+	rig.beforeEachStep([&](double step_s)
+					   {
 		test.advance(step_s);
 		for (ScaledLoad* load : {&horizontal, &vertical})
 		{
@@ -89,14 +90,14 @@ PortalResult runPortal(const PortalParameters& p)
 		columnLeft.updateForStep(step_s);
 		beam.updateForStep(step_s);
 		columnRight.updateForStep(step_s);
-		plastic::updateJointForStep(*base.constraint, baseSpec, step_s);
-	});
-	rig.afterEachStep([&] {
+		plastic::updateJointForStep(*base.constraint, baseSpec, step_s); });
+	rig.afterEachStep([&]
+					  {
 		horizontal.afterStep();
 		vertical.afterStep();
-		for (PlanarAngle& a : angles) a.update();
-	});
-	auto rotations = [&] {
+		for (PlanarAngle& a : angles) a.update(); });
+	auto rotations = [&]
+	{
 		std::vector<double> x;
 		for (size_t i = 0; i + 1 < angles.size(); i++) x.push_back(angles[i + 1].angle_rad() - angles[i].angle_rad());
 		return x;
@@ -105,7 +106,8 @@ PortalResult runPortal(const PortalParameters& p)
 	{
 		rig.step();
 		const std::vector<double> now = rotations();
-		if (!std::all_of(now.begin(), now.end(), [](double x) { return std::isfinite(x); }))
+		if (!std::all_of(now.begin(), now.end(), [](double x)
+						 { return std::isfinite(x); }))
 		{
 			r.finite = false;
 			break;

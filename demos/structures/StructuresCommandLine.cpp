@@ -53,29 +53,40 @@ using Flags = std::map<std::string, Flag<P>>;
 template <class P>
 Flag<P> number(double P::*field, const char* help)
 {
-	return {[field](P& p, const std::string& t) { return parseNumber(t, p.*field); }, help};
+	return {[field](P& p, const std::string& t)
+			{ return parseNumber(t, p.*field); },
+			help};
 }
 
 template <class P>
 Flag<P> whole(int P::*field, const char* help)
 {
-	return {[field](P& p, const std::string& t) { return parseInteger(t, p.*field); }, help};
+	return {[field](P& p, const std::string& t)
+			{ return parseInteger(t, p.*field); },
+			help};
 }
 
 template <class P>
 Flag<P> boolean(bool P::*field, const char* help)
 {
-	return {[field](P& p, const std::string&) { return (p.*field = true); }, help, false};
+	return {[field](P& p, const std::string&)
+			{ return (p.*field = true); },
+			help, false};
 }
 
 template <class P>
 Flags<P> commonFlags()
 {
 	Flags<P> f;
-	f["method"] = {[](P& p, const std::string& t) { return parseMethod(t, p.solver.method); },
+	f["method"] = {[](P& p, const std::string& t)
+				   { return parseMethod(t, p.solver.method); },
 				   "NAME  joint method: hinge-motor, plastic-hinge, elastic-plastic, elastic-plastic2; default plastic-hinge"};
-	f["dt"] = {[](P& p, const std::string& t) { return parseNumber(t, p.solver.step_s); }, "SECONDS  internal step, default 1e-3"};
-	f["iterations"] = {[](P& p, const std::string& t) { return parseInteger(t, p.solver.iterations); }, "N  solver iterations, default 1000"};
+	f["dt"] = {[](P& p, const std::string& t)
+			   { return parseNumber(t, p.solver.step_s); },
+			   "SECONDS  internal step, default 1e-3"};
+	f["iterations"] = {[](P& p, const std::string& t)
+					   { return parseInteger(t, p.solver.iterations); },
+					   "N  solver iterations, default 1000"};
 	f["section-width"] = number(&P::section_width_m, "M  rectangle along the bending axis, default 0.05");
 	f["section-depth"] = number(&P::section_depth_m, "M  rectangle in the bending plane, default 0.1");
 	f["fy"] = number(&P::yield_stress_pa, "PA  yield stress, default 400e6 (Mp = fy b d^2 / 4 = 50 kN m)");
@@ -99,7 +110,8 @@ void addRampFlags(Flags<P>& f, const char* rateHelp)
 
 const Flags<CantileverParameters>& cantileverFlags()
 {
-	static const Flags<CantileverParameters> flags = [] {
+	static const Flags<CantileverParameters> flags = []
+	{
 		using P = CantileverParameters;
 		Flags<P> f = commonFlags<P>();
 		addRampFlags(f, "1/S  > 0: ramp the load ratio and find the collapse; 0 (default): constant --load-ratio");
@@ -114,7 +126,8 @@ const Flags<CantileverParameters>& cantileverFlags()
 
 const Flags<PortalParameters>& portalFlags()
 {
-	static const Flags<PortalParameters> flags = [] {
+	static const Flags<PortalParameters> flags = []
+	{
 		using P = PortalParameters;
 		Flags<P> f = commonFlags<P>();
 		addRampFlags(f, "1/S  load factor rate from --slow-from on, default 0.02");
@@ -131,7 +144,8 @@ const Flags<PortalParameters>& portalFlags()
 
 const Flags<DropWeightParameters>& dropWeightFlags()
 {
-	static const Flags<DropWeightParameters> flags = [] {
+	static const Flags<DropWeightParameters> flags = []
+	{
 		using P = DropWeightParameters;
 		Flags<P> f = commonFlags<P>();
 		f["clamped"] = boolean(&P::clamped, "both ends clamped by plastic joints (default: simply supported)");

@@ -74,16 +74,7 @@ std::string toJson(const CantileverParameters& p, const CantileverResult& r)
 	Json j = solverJson("cantilever", p.solver);
 	std::vector<std::string> mechanism;
 	for (int i : r.mechanism) mechanism.push_back(i == 0 ? "root" : "inner-" + std::to_string(i));
-	j.add("follower", p.follower_load).add("ramp", p.ramp_rate_per_s > 0).add("load_ratio", p.load_ratio)
-		.add("plastic_moment_Nm", r.answer.plastic_moment_nm).add("analytic_collapse_load_N", r.answer.collapse_load_n)
-		.add("collapse_ratio", r.collapse_ratio).add("collapse_error_pct", 100 * (r.collapse_ratio - r.answer.collapse_ratio) / r.answer.collapse_ratio)
-		.add("holds", long(r.holds)).add("mechanism", mechanism).add("analytic_stop_rotation_rad", r.answer.stop_rotation_rad).add("stop_rotation_rad", r.stop_rotation_rad)
-		.add("stop_error_pct", 100 * (r.stop_rotation_rad - r.answer.stop_rotation_rad) / r.answer.stop_rotation_rad)
-		.add("root_rotation_rad", r.root_rotation_rad).add("max_root_rotation_rad", r.max_root_rotation_rad)
-		.add("max_inner_rotation_rad", r.max_inner_rotation_rad).add("load_work_J", r.load_work_j).add("kinetic_J", r.kinetic_j)
-		.add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j)
-		.add("energy_balance_error_pct", r.energy_balance_error_pct).add("steps", r.steps).add("simulated_s", r.simulated_s)
-		.add("wall_s", r.wall_s).add("finite", r.finite);
+	j.add("follower", p.follower_load).add("ramp", p.ramp_rate_per_s > 0).add("load_ratio", p.load_ratio).add("plastic_moment_Nm", r.answer.plastic_moment_nm).add("analytic_collapse_load_N", r.answer.collapse_load_n).add("collapse_ratio", r.collapse_ratio).add("collapse_error_pct", 100 * (r.collapse_ratio - r.answer.collapse_ratio) / r.answer.collapse_ratio).add("holds", long(r.holds)).add("mechanism", mechanism).add("analytic_stop_rotation_rad", r.answer.stop_rotation_rad).add("stop_rotation_rad", r.stop_rotation_rad).add("stop_error_pct", 100 * (r.stop_rotation_rad - r.answer.stop_rotation_rad) / r.answer.stop_rotation_rad).add("root_rotation_rad", r.root_rotation_rad).add("max_root_rotation_rad", r.max_root_rotation_rad).add("max_inner_rotation_rad", r.max_inner_rotation_rad).add("load_work_J", r.load_work_j).add("kinetic_J", r.kinetic_j).add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j).add("energy_balance_error_pct", r.energy_balance_error_pct).add("steps", r.steps).add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
 	return j.str();
 }
 
@@ -93,15 +84,7 @@ std::string toJson(const PortalParameters& p, const PortalResult& r)
 	const PortalAnswer& a = r.answer;
 	std::vector<std::string> sites;
 	for (const PortalJointSite& s : a.sites) sites.push_back(s.name);
-	j.add("horizontal_load_N", p.horizontal_load_n).add("vertical_load_N", p.vertical_load_n).add("plastic_moment_Nm", a.plastic_moment_nm)
-		.add("beam_factor", a.beam_factor).add("sway_factor", a.sway_factor).add("combined_factor", a.combined_factor)
-		.add("analytic_collapse_factor", a.collapse_factor).add("analytic_mechanism", a.mechanism)
-		.add("analytic_hinges", siteNames(a, a.mechanism_sites)).add("collapse_factor", r.collapse_factor)
-		.add("collapse_error_pct", r.collapse_error_pct).add("holds", long(r.holds)).add("hinges", siteNames(a, r.mechanism_sites)).add("mechanism_matches", r.mechanism_matches)
-		.add("sites", sites).add("analytic_mechanism_rotations", a.mechanism_rotations).add("mechanism_rotations_rad", r.mechanism_rotations_rad)
-		.add("rotations_rad", r.rotations_rad).add("load_work_J", r.load_work_j).add("kinetic_J", r.kinetic_j)
-		.add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j)
-		.add("steps", r.steps).add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
+	j.add("horizontal_load_N", p.horizontal_load_n).add("vertical_load_N", p.vertical_load_n).add("plastic_moment_Nm", a.plastic_moment_nm).add("beam_factor", a.beam_factor).add("sway_factor", a.sway_factor).add("combined_factor", a.combined_factor).add("analytic_collapse_factor", a.collapse_factor).add("analytic_mechanism", a.mechanism).add("analytic_hinges", siteNames(a, a.mechanism_sites)).add("collapse_factor", r.collapse_factor).add("collapse_error_pct", r.collapse_error_pct).add("holds", long(r.holds)).add("hinges", siteNames(a, r.mechanism_sites)).add("mechanism_matches", r.mechanism_matches).add("sites", sites).add("analytic_mechanism_rotations", a.mechanism_rotations).add("mechanism_rotations_rad", r.mechanism_rotations_rad).add("rotations_rad", r.rotations_rad).add("load_work_J", r.load_work_j).add("kinetic_J", r.kinetic_j).add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j).add("steps", r.steps).add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
 	return j.str();
 }
 
@@ -109,16 +92,7 @@ std::string toJson(const DropWeightParameters& p, const DropWeightResult& r)
 {
 	Json j = solverJson("drop-weight", p.solver);
 	const DropWeightAnswer& a = r.answer;
-	j.add("clamped", p.clamped).add("plastic_moment_Nm", a.plastic_moment_nm).add("beam_mass_kg", a.beam_mass_kg)
-		.add("effective_mass_kg", a.effective_mass_kg).add("initial_kinetic_J", a.initial_kinetic_j)
-		.add("analytic_kinetic_after_impact_J", a.kinetic_after_impact_j).add("kinetic_after_impact_J", r.kinetic_after_impact_j)
-		.add("analytic_midspan_rotation_rad", a.midspan_rotation_rad).add("midspan_rotation_rad", r.midspan_rotation_rad)
-		.add("midspan_error_pct", r.midspan_error_pct).add("analytic_support_rotation_rad", a.support_rotation_rad)
-		.add("left_support_rotation_rad", r.left_support_rotation_rad).add("right_support_rotation_rad", r.right_support_rotation_rad)
-		.add("max_inner_rotation_rad", r.max_inner_rotation_rad).add("kinetic_end_J", r.kinetic_end_j)
-		.add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j)
-		.add("plastic_work_error_pct", r.plastic_work_error_pct).add("balance_error_pct", r.balance_error_pct).add("steps", r.steps)
-		.add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
+	j.add("clamped", p.clamped).add("plastic_moment_Nm", a.plastic_moment_nm).add("beam_mass_kg", a.beam_mass_kg).add("effective_mass_kg", a.effective_mass_kg).add("initial_kinetic_J", a.initial_kinetic_j).add("analytic_kinetic_after_impact_J", a.kinetic_after_impact_j).add("kinetic_after_impact_J", r.kinetic_after_impact_j).add("analytic_midspan_rotation_rad", a.midspan_rotation_rad).add("midspan_rotation_rad", r.midspan_rotation_rad).add("midspan_error_pct", r.midspan_error_pct).add("analytic_support_rotation_rad", a.support_rotation_rad).add("left_support_rotation_rad", r.left_support_rotation_rad).add("right_support_rotation_rad", r.right_support_rotation_rad).add("max_inner_rotation_rad", r.max_inner_rotation_rad).add("kinetic_end_J", r.kinetic_end_j).add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j).add("plastic_work_error_pct", r.plastic_work_error_pct).add("balance_error_pct", r.balance_error_pct).add("steps", r.steps).add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
 	return j.str();
 }
 

@@ -95,7 +95,7 @@ TEST(PortalScene, OtherFrameWithMoreJoints)
 	p.column_segments = 3;
 	p.beam_segments = 4;
 	p.section_width_m = 0.08;
-	p.section_depth_m = 0.16;  // Mp = 400e6 x 0.08 x 0.0256 / 4 = 204.8 kN m
+	p.section_depth_m = 0.16;     // Mp = 400e6 x 0.08 x 0.0256 / 4 = 204.8 kN m
 	p.horizontal_load_n = 150e3;  // H h = 375 kN m
 	p.vertical_load_n = 150e3;    // V L / 2 = 450 kN m: combined 6 Mp / 825 kN m = 1.4894
 	const double mp = 400e6 * 0.08 * 0.16 * 0.16 / 4;
