@@ -1,0 +1,73 @@
+// A cantilever: a straight member of length L along +x from a fixed support, in n segments, bending about z,
+// loaded at its tip by P along -y, either fixed in direction (dead) or turning with the tip (follower).
+// Plastic analysis: it collapses at P = Mp / L with the hinge at the support, the inner joints locked (their
+// moments are below the root's). Under a constant dead load P = lambda Mp / L (lambda > 1) it turns about the
+// root and stops where the load's work equals the plastic work, P L sin(theta) = Mp theta.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "StructureRig.h"
+
+namespace structures
+{
+struct CantileverParameters
+{
+	SolverSettings solver;
+	double length_m = 2.0;
+	int segments = 4;
+	double section_width_m = 0.05;  // along the bending axis z
+	double section_depth_m = 0.10;  // along y: Mp = fy b d^2 / 4
+	double yield_stress_pa = 400e6;
+	double youngs_modulus_pa = 200e9;
+	double density_kg_m3 = 7800;
+	bool follower_load = false;
+	// ramp_rate_per_s > 0: the load ratio P L / Mp rises at fast_ramp_rate_per_s up to slow_from_fraction of
+	// the plastic-analysis collapse ratio, then at ramp_rate_per_s, until a joint turns faster than
+	// collapse_rate_rad_s (over rate_window_s); then it is held until the mechanism has turned
+	// mechanism_rotation_rad (else, after hold_s, the ramp resumes). 0: the load ratio is load_ratio from the start.
+	double load_ratio = 1.5;
+	double ramp_rate_per_s = 0;
+	double fast_ramp_rate_per_s = 0.2;
+	double slow_from_fraction = 0.9;
+	double collapse_rate_rad_s = 0.05;
+	double rate_window_s = 0.1;
+	double mechanism_rotation_rad = 0.05;
+	double hold_s = 2.0;       // a held load that has not turned the mechanism that far by then is raised again
+	double duration_s = 30.0;  // at most; a constant dead load stops when the beam has stopped
+};
+
+struct CantileverAnswer
+{
+	double plastic_moment_nm = 0;
+	double collapse_load_n = 0;    // Mp / L
+	double collapse_ratio = 1;     // P L / Mp at collapse
+	double stop_rotation_rad = 0;  // constant dead load: where lambda sin(theta) = theta; 0 if it holds; NaN (follower, lambda > 1): never
+};
+
+struct CantileverResult
+{
+	CantileverAnswer answer;
+	double collapse_ratio = 0;     // ramp: the load ratio when the collapse was seen (NaN: never)
+	std::vector<int> mechanism;    // ramp: the joints (0 = root) that turned >= 20 % of the largest rotation after it
+	double root_rotation_rad = 0;  // at the end, measured from the bodies (positive: the tip went down)
+	double max_root_rotation_rad = 0;
+	double max_inner_rotation_rad = 0;    // largest |rotation| of any inner joint over the run, from the bodies
+	double stop_rotation_rad = 0;         // root rotation when the beam stopped (constant dead load; NaN: it did not)
+	double load_work_j = 0;               // the load times its point's displacement
+	double kinetic_j = 0;                 // from the bodies' velocities, at the end
+	double geometric_plastic_work_j = 0;  // Mp x the sum of |joint rotations| measured from the bodies
+	double booked_plastic_work_j = 0;     // what the joints booked (0 for the hinge-motor stand-in)
+	double energy_balance_error_pct = 0;  // (load work - kinetic - geometric plastic work) / load work
+	int holds = 0;                        // ramp: how many times the load was held (more than one: softening or vibration was not a collapse)
+	long steps = 0;
+	double simulated_s = 0;
+	double wall_s = 0;
+	bool finite = true;
+};
+
+std::vector<std::string> validateCantileverParameters(const CantileverParameters& p);
+CantileverAnswer cantileverAnswer(const CantileverParameters& p);
+CantileverResult runCantilever(const CantileverParameters& p);
+}  // namespace structures

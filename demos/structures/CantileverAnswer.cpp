@@ -1,0 +1,62 @@
+#include <cmath>
+#include <limits>
+
+#include "Cantilever.h"
+#include "Section.h"
+
+namespace structures
+{
+std::vector<std::string> validateCantileverParameters(const CantileverParameters& p)
+{
+	std::vector<std::string> e = validateSolverSettings(p.solver);
+	requireRange(e, "length", p.length_m, 0.01, 100, "m");
+	requireWhole(e, "segments", p.segments, 1, 1000);
+	requireRange(e, "section-width", p.section_width_m, 1e-4, 10, "m");
+	requireRange(e, "section-depth", p.section_depth_m, 1e-4, 10, "m");
+	requireRange(e, "fy", p.yield_stress_pa, 1e3, 1e11, "Pa");
+	requireRange(e, "youngs-modulus", p.youngs_modulus_pa, 1e3, 1e13, "Pa");
+	requireRange(e, "density", p.density_kg_m3, 1, 1e5, "kg/m3");
+	requireRange(e, "load-ratio", p.load_ratio, 0, 100, "(P L / Mp)");
+	requireRange(e, "ramp-rate", p.ramp_rate_per_s, 0, 100, "1/s (0 = constant load)");
+	requireRange(e, "fast-ramp-rate", p.fast_ramp_rate_per_s, 1e-6, 1000, "1/s");
+	requireRange(e, "slow-from", p.slow_from_fraction, 0, 1, "(of the plastic-analysis collapse load)");
+	requireRange(e, "collapse-rate", p.collapse_rate_rad_s, 1e-6, 100, "rad/s");
+	requireRange(e, "rate-window", p.rate_window_s, 1e-3, 10, "s");
+	requireRange(e, "mechanism-rotation", p.mechanism_rotation_rad, 1e-4, 3, "rad");
+	requireRange(e, "hold", p.hold_s, 1e-3, 100, "s");
+	requireRange(e, "duration", p.duration_s, 1e-3, 1000, "s");
+	if (e.empty() && p.duration_s / p.solver.step_s > 1e8) e.push_back("duration / dt: more than 1e8 steps");
+	return e;
+}
+
+CantileverAnswer cantileverAnswer(const CantileverParameters& p)
+{
+	CantileverAnswer a;
+	plastic::Material m;
+	m.yield_stress_pa = p.yield_stress_pa;
+	a.plastic_moment_nm = plastic::capacities(plastic::rectangle(p.section_width_m, p.section_depth_m), m).plastic_moment_y_nm;
+	a.collapse_load_n = a.plastic_moment_nm / p.length_m;
+	a.collapse_ratio = 1.0;
+	const double lambda = p.load_ratio;
+	if (lambda <= 1.0)
+	{
+		a.stop_rotation_rad = 0;
+	}
+	else if (p.follower_load)
+	{
+		a.stop_rotation_rad = std::numeric_limits<double>::quiet_NaN();  // the follower's work P L theta always beats Mp theta
+	}
+	else
+	{
+		// the root of f(theta) = lambda sin(theta) - theta in (0, pi): f > 0 just above 0, f(pi) < 0; bisection
+		double lo = 1e-9, hi = M_PI;
+		for (int i = 0; i < 200; i++)
+		{
+			const double mid = 0.5 * (lo + hi);
+			(lambda * std::sin(mid) - mid > 0 ? lo : hi) = mid;
+		}
+		a.stop_rotation_rad = 0.5 * (lo + hi);
+	}
+	return a;
+}
+}  // namespace structures

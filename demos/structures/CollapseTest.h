@@ -1,0 +1,50 @@
+// A quasi-static collapse test, as in a laboratory: the load factor rises (LoadRamp); when a joint runs away
+// (CollapseDetector) the load is held; if the structure keeps moving until its joints have turned
+// mechanism_rotation_rad since then, it has collapsed at the held factor, otherwise (an elastic-plastic
+// structure that only softened as its hinges formed one by one, or a vibration) the ramp resumes after hold_s.
+#pragma once
+
+#include <limits>
+#include <vector>
+
+#include "CollapseDetector.h"
+#include "LoadRamp.h"
+
+namespace structures
+{
+struct CollapseTestSettings
+{
+	double slow_rate_per_s = 0.02;
+	double fast_rate_per_s = 0.2;
+	double slow_from_factor = 0.9;
+	double collapse_rate_rad_s = 0.05;
+	double rate_window_s = 0.1;
+	double mechanism_rotation_rad = 0.05;
+	double hold_s = 2.0;
+};
+
+class CollapseTest
+{
+public:
+	explicit CollapseTest(const CollapseTestSettings& s);
+	double factor() const { return m_ramp.factor(); }
+	void advance(double step_s) { m_ramp.advance(step_s); }
+	// after each step, with the joints' rotations measured on the bodies
+	void update(double time_s, const std::vector<double>& rotations_rad);
+	bool done() const { return m_done; }
+	double collapseFactor() const { return m_collapseFactor; }  // NaN until a collapse is confirmed
+	int holds() const { return m_holds; }                       // how many times the load was held
+	// the mechanism: rotation of each joint since the (confirmed) hold began, and the joints that turned >= 20 %
+	std::vector<double> mechanismRotations(const std::vector<double>& rotations_rad) const { return m_detector.sinceCollapse(rotations_rad); }
+	std::vector<int> mechanism(const std::vector<double>& rotations_rad) const { return m_detector.mechanism(rotations_rad); }
+
+private:
+	CollapseTestSettings m_s;
+	LoadRamp m_ramp;
+	CollapseDetector m_detector;
+	double m_heldSince_s = 0;
+	double m_collapseFactor = std::numeric_limits<double>::quiet_NaN();
+	int m_holds = 0;
+	bool m_done = false;
+};
+}  // namespace structures

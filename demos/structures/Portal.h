@@ -1,0 +1,88 @@
+// A fixed-base portal frame: two columns of height h at x = 0 and x = L, a beam of span L between their tops,
+// every member in segments of one section, every joint (bases, knees, inner joints) a plastic joint of one
+// method, in the x-y plane bending about z. Loads, proportional to one factor lambda: H along +x at the left
+// knee and V along -y at mid-span. Plastic analysis: the beam (V L/2 = 4 Mp), sway (H h = 4 Mp) and combined
+// (H h + V L/2 = 6 Mp) mechanisms; the collapse factor is the least over every combination of the two
+// independent mechanisms, computed from the parameters.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "StructureRig.h"
+
+namespace structures
+{
+struct PortalParameters
+{
+	SolverSettings solver;
+	double span_m = 4.0;
+	double height_m = 3.0;
+	int column_segments = 2;  // the joints between them are the mid-column hinge sites
+	int beam_segments = 2;    // even: a joint at mid-span
+	double section_width_m = 0.05;
+	double section_depth_m = 0.10;
+	double yield_stress_pa = 400e6;
+	double youngs_modulus_pa = 200e9;
+	double density_kg_m3 = 7800;
+	double horizontal_load_n = 50e3;  // H at lambda = 1: H h = 3 Mp with the defaults
+	double vertical_load_n = 75e3;    // V at lambda = 1: V L / 2 = 3 Mp: the combined mechanism at lambda = 1
+	// the load factor rises at fast_ramp_rate_per_s up to slow_from_fraction of the plastic-analysis collapse
+	// factor, then at ramp_rate_per_s, until a joint turns faster than collapse_rate_rad_s (over rate_window_s);
+	// then it is held: a collapse if the mechanism turns mechanism_rotation_rad within hold_s, else the ramp resumes
+	double ramp_rate_per_s = 0.02;
+	double fast_ramp_rate_per_s = 0.2;
+	double slow_from_fraction = 0.9;
+	double collapse_rate_rad_s = 0.05;
+	double rate_window_s = 0.1;
+	double mechanism_rotation_rad = 0.05;
+	double hold_s = 2.0;       // a held load that has not turned the mechanism that far by then is raised again
+	double duration_s = 60.0;  // at most
+};
+
+// The frame's joints in order along it: base-left, the left column's inner joints, knee-left, the beam's inner
+// joints (mid-span among them), knee-right, the right column's inner joints, base-right.
+struct PortalJointSite
+{
+	std::string name;          // base-left, column-left-1.., knee-left, beam-1.., mid-span, knee-right, column-right-1.., base-right
+	double beam_rotation = 0;  // in the beam mechanism per unit rotation of its members (counter-clockwise +)
+	double sway_rotation = 0;  // in the sway mechanism
+};
+
+struct PortalAnswer
+{
+	double plastic_moment_nm = 0;
+	std::vector<PortalJointSite> sites;
+	double beam_factor = 0;                   // 4 Mp / (V L / 2) (infinite without V)
+	double sway_factor = 0;                   // 4 Mp / (H h)
+	double combined_factor = 0;               // 6 Mp / (H h + V L / 2)
+	double collapse_factor = 0;               // the least over every mechanism
+	std::string mechanism;                    // beam, sway, combined (or combination)
+	std::vector<double> mechanism_rotations;  // per site, in the collapse mechanism, the largest = 1
+	std::vector<int> mechanism_sites;         // the sites that rotate in it
+};
+
+struct PortalResult
+{
+	PortalAnswer answer;
+	double collapse_factor = 0;  // the load factor when the collapse was seen (NaN: never)
+	double collapse_error_pct = 0;
+	std::vector<double> rotations_rad;            // per site at the end, from the bodies
+	std::vector<double> mechanism_rotations_rad;  // per site since the collapse was seen
+	std::vector<int> mechanism_sites;             // the sites that turned >= 20 % of the largest since then
+	bool mechanism_matches = false;
+	double load_work_j = 0;
+	double kinetic_j = 0;
+	double booked_plastic_work_j = 0;
+	double geometric_plastic_work_j = 0;  // Mp x sum |site rotation| from the bodies
+	int holds = 0;                        // ramp: how many times the load was held (more than one: softening or vibration was not a collapse)
+	long steps = 0;
+	double simulated_s = 0;
+	double wall_s = 0;
+	bool finite = true;
+};
+
+std::vector<std::string> validatePortalParameters(const PortalParameters& p);
+PortalAnswer portalAnswer(const PortalParameters& p);
+PortalResult runPortal(const PortalParameters& p);
+}  // namespace structures

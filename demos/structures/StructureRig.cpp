@@ -1,0 +1,51 @@
+#include "StructureRig.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace structures
+{
+void requireRange(std::vector<std::string>& errors, const char* name, double value, double low, double high, const char* unit)
+{
+	if (!(std::isfinite(value) && value >= low && value <= high))
+	{
+		std::ostringstream out;
+		out << name << ": " << value << " is not in [" << low << ", " << high << "]" << (*unit ? " " : "") << unit;
+		errors.push_back(out.str());
+	}
+}
+
+void requireWhole(std::vector<std::string>& errors, const char* name, int value, int low, int high)
+{
+	if (value < low || value > high)
+	{
+		errors.push_back(std::string(name) + ": " + std::to_string(value) + " is not in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
+	}
+}
+
+std::vector<std::string> validateSolverSettings(const SolverSettings& s)
+{
+	std::vector<std::string> errors;
+	requireRange(errors, "dt", s.step_s, 1e-6, 0.05, "s");
+	requireWhole(errors, "iterations", s.iterations, 1, 100000);
+	return errors;
+}
+
+StructureRig::StructureRig(const SolverSettings& settings) : m_settings(settings)
+{
+	m_world.setGravity(btVector3(0, 0, 0));
+	m_world.getSolverInfo().m_numIterations = settings.iterations;
+	m_world.addRigidBody(&m_ground, 0, 0);
+}
+
+StructureRig::~StructureRig() { m_world.removeRigidBody(&m_ground); }
+
+void StructureRig::step()
+{
+	for (auto& f : m_before) f(m_settings.step_s);
+	m_world.stepSimulation(btScalar(m_settings.step_s), 0);
+	for (auto& f : m_after) f();
+	m_time_s += m_settings.step_s;
+	m_steps++;
+}
+}  // namespace structures

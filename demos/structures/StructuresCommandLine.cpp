@@ -1,0 +1,257 @@
+#include "StructuresCommandLine.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <functional>
+#include <map>
+
+namespace structures
+{
+namespace
+{
+bool parseNumber(const std::string& text, double& value)
+{
+	if (text.empty()) return false;
+	char* end = nullptr;
+	errno = 0;
+	value = std::strtod(text.c_str(), &end);
+	return end == text.c_str() + text.size() && errno == 0;
+}
+
+bool parseInteger(const std::string& text, int& value)
+{
+	double d;
+	if (!parseNumber(text, d) || d != static_cast<double>(static_cast<long long>(d)) || d < -1e9 || d > 1e9) return false;
+	value = static_cast<int>(d);
+	return true;
+}
+
+bool parseMethod(const std::string& text, plastic::JointMethod& method)
+{
+	for (plastic::JointMethod m : {plastic::JointMethod::HingeMotor, plastic::JointMethod::PlasticHinge, plastic::JointMethod::ElasticPlastic,
+								   plastic::JointMethod::ElasticPlastic2})
+		if (text == plastic::jointMethodName(m))
+		{
+			method = m;
+			return true;
+		}
+	return false;
+}
+
+// a flag of a scene's parameters P: how to set it from its text (empty for a flag without a value) and its help
+template <class P>
+struct Flag
+{
+	std::function<bool(P&, const std::string&)> set;
+	std::string help;
+	bool takesValue = true;
+};
+
+template <class P>
+using Flags = std::map<std::string, Flag<P>>;
+
+template <class P>
+Flag<P> number(double P::*field, const char* help)
+{
+	return {[field](P& p, const std::string& t)
+			{ return parseNumber(t, p.*field); },
+			help};
+}
+
+template <class P>
+Flag<P> whole(int P::*field, const char* help)
+{
+	return {[field](P& p, const std::string& t)
+			{ return parseInteger(t, p.*field); },
+			help};
+}
+
+template <class P>
+Flag<P> boolean(bool P::*field, const char* help)
+{
+	return {[field](P& p, const std::string&)
+			{ return (p.*field = true); },
+			help, false};
+}
+
+template <class P>
+Flags<P> commonFlags()
+{
+	Flags<P> f;
+	f["method"] = {[](P& p, const std::string& t)
+				   { return parseMethod(t, p.solver.method); },
+				   "NAME  joint method: hinge-motor, plastic-hinge, elastic-plastic, elastic-plastic2; default plastic-hinge"};
+	f["dt"] = {[](P& p, const std::string& t)
+			   { return parseNumber(t, p.solver.step_s); },
+			   "SECONDS  internal step, default 1e-3"};
+	f["iterations"] = {[](P& p, const std::string& t)
+					   { return parseInteger(t, p.solver.iterations); },
+					   "N  solver iterations, default 1000"};
+	f["section-width"] = number(&P::section_width_m, "M  rectangle along the bending axis, default 0.05");
+	f["section-depth"] = number(&P::section_depth_m, "M  rectangle in the bending plane, default 0.1");
+	f["fy"] = number(&P::yield_stress_pa, "PA  yield stress, default 400e6 (Mp = fy b d^2 / 4 = 50 kN m)");
+	f["youngs-modulus"] = number(&P::youngs_modulus_pa, "PA  default 200e9");
+	f["density"] = number(&P::density_kg_m3, "KG_M3  default 7800");
+	f["duration"] = number(&P::duration_s, "SECONDS  simulated time at most");
+	return f;
+}
+
+template <class P>
+void addRampFlags(Flags<P>& f, const char* rateHelp)
+{
+	f["ramp-rate"] = number(&P::ramp_rate_per_s, rateHelp);
+	f["fast-ramp-rate"] = number(&P::fast_ramp_rate_per_s, "1/S  load factor rate up to --slow-from, default 0.2");
+	f["slow-from"] = number(&P::slow_from_fraction, "FRACTION  of the plastic-analysis collapse factor where the slow ramp starts, default 0.9");
+	f["collapse-rate"] = number(&P::collapse_rate_rad_s, "RAD_S  a joint turning faster (over --rate-window) is the collapse, default 0.05");
+	f["rate-window"] = number(&P::rate_window_s, "SECONDS  default 0.1");
+	f["mechanism-rotation"] = number(&P::mechanism_rotation_rad, "RAD  a held load that turns the mechanism this far is the collapse, default 0.05");
+	f["hold"] = number(&P::hold_s, "SECONDS  how long the load is held before it rises again, default 2");
+}
+
+const Flags<CantileverParameters>& cantileverFlags()
+{
+	static const Flags<CantileverParameters> flags = []
+	{
+		using P = CantileverParameters;
+		Flags<P> f = commonFlags<P>();
+		addRampFlags(f, "1/S  > 0: ramp the load ratio and find the collapse; 0 (default): constant --load-ratio");
+		f["length"] = number(&P::length_m, "M  default 2");
+		f["segments"] = whole(&P::segments, "N  default 4");
+		f["load-ratio"] = number(&P::load_ratio, "P_L_OVER_MP  constant tip load, default 1.5");
+		f["follower"] = boolean(&P::follower_load, "the load turns with the tip (default: dead load along -y)");
+		return f;
+	}();
+	return flags;
+}
+
+const Flags<PortalParameters>& portalFlags()
+{
+	static const Flags<PortalParameters> flags = []
+	{
+		using P = PortalParameters;
+		Flags<P> f = commonFlags<P>();
+		addRampFlags(f, "1/S  load factor rate from --slow-from on, default 0.02");
+		f["span"] = number(&P::span_m, "M  L, default 4");
+		f["height"] = number(&P::height_m, "M  h, default 3");
+		f["column-segments"] = whole(&P::column_segments, "N  default 2");
+		f["beam-segments"] = whole(&P::beam_segments, "N  even, default 2");
+		f["horizontal-load"] = number(&P::horizontal_load_n, "N  H at the left knee at load factor 1, default 50e3");
+		f["vertical-load"] = number(&P::vertical_load_n, "N  V at mid-span at load factor 1, default 75e3");
+		return f;
+	}();
+	return flags;
+}
+
+const Flags<DropWeightParameters>& dropWeightFlags()
+{
+	static const Flags<DropWeightParameters> flags = []
+	{
+		using P = DropWeightParameters;
+		Flags<P> f = commonFlags<P>();
+		f["clamped"] = boolean(&P::clamped, "both ends clamped by plastic joints (default: simply supported)");
+		f["span"] = number(&P::span_m, "M  L, default 2");
+		f["segments"] = whole(&P::segments, "N  even, default 2");
+		f["weight-mass"] = number(&P::weight_mass_kg, "KG  G, default 1000");
+		f["weight-radius"] = number(&P::weight_radius_m, "M  default 0.05");
+		f["impact-speed"] = number(&P::impact_speed_m_s, "M_S  v0, default 4.5");
+		return f;
+	}();
+	return flags;
+}
+
+template <class P>
+void applyFlag(const Flags<P>& flags, P& p, const std::string& name, bool hasValue, const std::string& value, const std::string& scene,
+			   std::vector<std::string>& errors)
+{
+	auto it = flags.find(name);
+	if (it == flags.end())
+		errors.push_back("unknown flag --" + name + " for --scene=" + scene + " (see --help)");
+	else if (!it->second.takesValue && hasValue)
+		errors.push_back("--" + name + " takes no value");
+	else if (it->second.takesValue && !hasValue)
+		errors.push_back("--" + name + " needs a value: --" + name + "=" + it->second.help);
+	else if (!it->second.set(p, value))
+		errors.push_back("--" + name + ": '" + value + "' is not valid; expected " + it->second.help);
+}
+
+template <class P>
+std::string usageOf(const Flags<P>& flags)
+{
+	std::string text;
+	for (const auto& [name, flag] : flags) text += "  --" + name + (flag.takesValue ? "=" : "  ") + flag.help + "\n";
+	return text;
+}
+}  // namespace
+
+StructuresCommandLine parseStructuresCommandLine(const std::vector<std::string>& arguments)
+{
+	StructuresCommandLine cl;
+	std::vector<std::pair<std::string, std::pair<bool, std::string>>> flags;
+	for (const std::string& argument : arguments)
+	{
+		if (argument.rfind("--", 0) != 0)
+		{
+			cl.errors.push_back("unexpected argument '" + argument + "' (flags look like --name=value)");
+			continue;
+		}
+		std::string name = argument.substr(2), value;
+		const size_t eq = name.find('=');
+		const bool hasValue = eq != std::string::npos;
+		if (hasValue)
+		{
+			value = name.substr(eq + 1);
+			name = name.substr(0, eq);
+		}
+		if (name == "help" || name == "json")
+		{
+			if (hasValue)
+				cl.errors.push_back("--" + name + " takes no value");
+			else
+				(name == "help" ? cl.help : cl.json) = true;
+		}
+		else if (name == "scene")
+		{
+			if (value == "cantilever" || value == "portal" || value == "drop-weight")
+				cl.scene = value;
+			else
+				cl.errors.push_back("--scene: '" + value + "' is not valid; expected one of cantilever, portal, drop-weight");
+		}
+		else
+			flags.push_back({name, {hasValue, value}});
+	}
+	if (cl.help) return cl;
+	if (cl.scene.empty() && cl.errors.empty())
+	{
+		cl.errors.push_back("--scene: missing; expected one of cantilever, portal, drop-weight");
+		return cl;
+	}
+	for (const auto& [name, v] : flags)
+	{
+		if (cl.scene == "cantilever") applyFlag(cantileverFlags(), cl.cantilever, name, v.first, v.second, cl.scene, cl.errors);
+		if (cl.scene == "portal") applyFlag(portalFlags(), cl.portal, name, v.first, v.second, cl.scene, cl.errors);
+		if (cl.scene == "drop-weight") applyFlag(dropWeightFlags(), cl.dropWeight, name, v.first, v.second, cl.scene, cl.errors);
+	}
+	if (!cl.errors.empty()) return cl;
+	std::vector<std::string> invalid;
+	if (cl.scene == "cantilever") invalid = validateCantileverParameters(cl.cantilever);
+	if (cl.scene == "portal") invalid = validatePortalParameters(cl.portal);
+	if (cl.scene == "drop-weight") invalid = validateDropWeightParameters(cl.dropWeight);
+	cl.errors.insert(cl.errors.end(), invalid.begin(), invalid.end());
+	return cl;
+}
+
+std::string structuresUsage()
+{
+	return "usage: structures --scene=cantilever|portal|drop-weight [--json] [flags]\n"
+		   "Runs a structure with a textbook answer headless and prints the simulated result beside the answer.\n"
+		   "--scene=cantilever: a tip-loaded cantilever (collapse at P = Mp / L; a dead load above it stops where\n"
+		   "P L sin(theta) = Mp theta)\n" +
+		   usageOf(cantileverFlags()) +
+		   "--scene=portal: a fixed-base portal frame under H at the left knee and V at mid-span, the load factor\n"
+		   "ramped until it collapses (beam V L/2 = 4 Mp, sway H h = 4 Mp, combined H h + V L/2 = 6 Mp)\n" +
+		   usageOf(portalFlags()) +
+		   "--scene=drop-weight: a ball strikes a simply supported or clamped beam at mid-span (kinetic energy\n"
+		   "after the impact = Mp x sum of hinge rotations)\n" +
+		   usageOf(dropWeightFlags());
+}
+}  // namespace structures
