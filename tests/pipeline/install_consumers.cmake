@@ -32,7 +32,7 @@ endmacro()
 function(elapsed since what)
 	string(TIMESTAMP now "%s")
 	math(EXPR seconds "${now} - ${since}")
-	message(STATUS "${what}: ${seconds} s")
+	message(STATUS "${what}: done ${seconds} s after the start")
 endfunction()
 
 string(TIMESTAMP start "%s")
