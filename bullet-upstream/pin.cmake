@@ -8,32 +8,34 @@
 set(BULLET_UPSTREAM_PACKAGE "pybullet")
 set(BULLET_UPSTREAM_VERSION "3.2.7")
 set(BULLET_UPSTREAM_BT_VERSION "326")
-# The version string installed in BulletConfig.cmake and bullet.pc (BT_BULLET_VERSION 326).
-set(BULLET_UPSTREAM_VERSION_STRING "3.26")
+# Upstream's BULLET_VERSION for this tree: bullet3's VERSION file at 6c888f4 says 3.27 (the sdist has no
+# VERSION file; btScalar.h's BT_BULLET_VERSION was left at 326). Upstream's CMake makes it the libraries'
+# VERSION and SOVERSION (libBulletDynamics.so.3.27) and BULLET_VERSION_STRING / bullet.pc's Version; so does ours.
+set(BULLET_UPSTREAM_VERSION_STRING "3.27")
 set(BULLET_UPSTREAM_ARCHIVE "pybullet-3.2.7.tar.gz")
 set(BULLET_UPSTREAM_ARCHIVE_BYTES 80508379)
 set(BULLET_UPSTREAM_SHA256 "042879db8d101ac7590dee475fc6aded508b85fe1273fdbbfde1d88bd200e14f")
 # Top folder inside the archive.
 set(BULLET_UPSTREAM_TOPDIR "pybullet-3.2.7")
 
-# What is unpacked (paths relative to the top folder). The libraries need the
-# first group; the demo app (OpenGL / OSMesa) needs the second (BulletSoftBody
-# because the browser's OpenGLGuiHelper draws soft bodies; three headers that
-# OpenGLExampleBrowser.cpp includes). Both are always unpacked, since patches
-# 0008-0010 change files of the second group; only what a target needs is built.
+# What is unpacked (paths relative to the top folder). The libraries upstream
+# installs need the first group; the demo app (OpenGL / OSMesa) needs the second
+# (three headers that OpenGLExampleBrowser.cpp includes). Both are always unpacked,
+# since patches 0008-0011 change files of the second group; only what a target needs is built.
 set(BULLET_UPSTREAM_LIBRARY_PATHS
 	LICENSE.txt
 	src/LinearMath
+	src/Bullet3Common
 	src/BulletCollision
 	src/BulletDynamics
+	src/BulletInverseDynamics
+	src/BulletSoftBody
 	src/btBulletCollisionCommon.h
 	src/btBulletDynamicsCommon.h
 	src/btBulletCollisionAll.cpp
 	src/btBulletDynamicsAll.cpp
 	src/btLinearMathAll.cpp)
 set(BULLET_UPSTREAM_DEMO_PATHS
-	src/Bullet3Common
-	src/BulletSoftBody
 	examples/OpenGLWindow
 	examples/CommonInterfaces
 	examples/ExampleBrowser

@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/deps.sh
 flags="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined -O1 -g"
-BUILD_DIR=build-asan bash ci/configure.sh -DBP_BUILD_TESTS=ON -DBP_BUILD_BROWSER=OFF -DCMAKE_BUILD_TYPE=Debug \
+BUILD_DIR=build-asan bash ci/configure.sh -DBP_BUILD_TESTS=ON -DBP_BUILD_BROWSER=OFF -DBP_INSTALL=OFF -DCMAKE_BUILD_TYPE=Debug \
 	-DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined"
 cmake --build build-asan
 cd build-asan

@@ -1,7 +1,7 @@
 # The upstream demo side the project's ExampleBrowser app needs, built from the patched tree:
-# Bullet3Common, BulletSoftBody (the browser's OpenGLGuiHelper draws soft bodies), glad,
-# OpenGLWindow (X11 window loaded at run time, plus the OSMesa window of patch 0010), Gwen
-# and the browser library. Only the app and the render tests link these; nothing else does.
+# glad, OpenGLWindow (X11 window loaded at run time, plus the OSMesa window of patch 0010), Gwen
+# and the browser library; they link Bullet3Common and BulletSoftBody (the browser's OpenGLGuiHelper
+# draws soft bodies) from cmake/BulletLibraries.cmake. Only the app and the render tests link these.
 
 find_path(OSMESA_INCLUDE_DIR GL/osmesa.h)
 find_library(OSMESA_LIBRARY OSMesa)
@@ -24,12 +24,6 @@ function(bp_upstream_demo_target name)
 		set_target_properties(${name} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE 16)
 	endif()
 endfunction()
-
-bp_add_bullet_library(Bullet3Common "${BULLET_TREE}" Bullet3Common)
-bp_add_bullet_library(BulletSoftBody "${BULLET_TREE}" BulletSoftBody)
-target_link_libraries(BulletSoftBody PUBLIC BulletDynamics)
-# btReducedDeformableContactConstraint.h has no include guard: no unity build for this one
-set_target_properties(BulletSoftBody PROPERTIES UNITY_BUILD OFF)
 
 file(GLOB opengl_window_sources "${BP_EXAMPLES}/OpenGLWindow/*.cpp")
 list(FILTER opengl_window_sources EXCLUDE REGEX "/(Mac|Win32|GLFW|EGL)[^/]*\\.cpp$")

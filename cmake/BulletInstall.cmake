@@ -1,21 +1,34 @@
-# `cmake --install` installs the patched Bullet like a normal Bullet install:
-# headers in include/bullet, static libraries in lib, BulletConfig.cmake for
-# find_package(Bullet) (BULLET_INCLUDE_DIRS, BULLET_LIBRARIES, ... as upstream's)
-# and bullet.pc for pkg-config.
+# `cmake --install` (with BP_INSTALL, the default) installs the patched Bullet where and as upstream's
+# CMake installs Bullet, so it replaces an upstream install:
+#   lib/      LinearMath, Bullet3Common, BulletCollision, BulletDynamics, BulletInverseDynamics, BulletSoftBody
+#             (static; shared with BUILD_SHARED_LIBS=ON, libBulletDynamics.so.<version> as upstream's)
+#   include/bullet/   btBulletCollisionCommon.h, btBulletDynamicsCommon.h and <library>/... as upstream lays
+#             them out (with upstream's extra copies of the common headers in the library folders), and also
+#             BulletInverseDynamics' .hpp headers, which upstream's "*.h" pattern leaves out
+#   lib/cmake/bullet/ BulletConfig.cmake (upstream's BULLET_* variables, imported targets Bullet::<library>),
+#             BulletConfigVersion.cmake, UseBullet.cmake
+#   lib/pkgconfig/bullet.pc
+# A consumer finds it with CMake's own FindBullet module (plain find_package(Bullet)), with
+# find_package(Bullet CONFIG) or with pkg-config (tests/pipeline/install_consumers.cmake checks all three).
 include(GNUInstallDirs)
 
 set(BULLET_VERSION_STRING "${BULLET_UPSTREAM_VERSION_STRING}")
 
-install(TARGETS LinearMath BulletCollision BulletDynamics
+install(TARGETS ${BP_INSTALLED_LIBRARIES}
 	EXPORT BulletPlasticityTargets
+	RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
 	ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
 	LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-foreach(dir LinearMath BulletCollision BulletDynamics)
+foreach(dir IN LISTS BP_INSTALLED_LIBRARIES)
 	install(DIRECTORY "${BULLET_TREE}/src/${dir}" DESTINATION include/bullet
-		FILES_MATCHING PATTERN "*.h" PATTERN ".pc" EXCLUDE)
+		FILES_MATCHING PATTERN "*.h" PATTERN "*.hpp")
 endforeach()
 install(FILES "${BULLET_TREE}/src/btBulletCollisionCommon.h" "${BULLET_TREE}/src/btBulletDynamicsCommon.h"
 	DESTINATION include/bullet)
+# upstream's src/*/CMakeLists.txt also copy the common headers into these folders
+install(FILES "${BULLET_TREE}/src/btBulletCollisionCommon.h" DESTINATION include/bullet/BulletCollision)
+install(FILES "${BULLET_TREE}/src/btBulletCollisionCommon.h" DESTINATION include/bullet/BulletInverseDynamics)
+install(FILES "${BULLET_TREE}/src/btBulletDynamicsCommon.h" DESTINATION include/bullet/BulletDynamics)
 install(EXPORT BulletPlasticityTargets NAMESPACE Bullet:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/bullet)
 
 if(BP_USE_DOUBLE_PRECISION)
@@ -28,7 +41,7 @@ endif()
 configure_file(cmake/BulletConfig.cmake.in "${PROJECT_BINARY_DIR}/BulletConfig.cmake" @ONLY)
 configure_file(cmake/BulletConfigVersion.cmake.in "${PROJECT_BINARY_DIR}/BulletConfigVersion.cmake" @ONLY)
 install(FILES "${PROJECT_BINARY_DIR}/BulletConfig.cmake" "${PROJECT_BINARY_DIR}/BulletConfigVersion.cmake"
-	DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/bullet)
+	cmake/UseBullet.cmake DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/bullet)
 # The prefix is substituted at install time so `cmake --install --prefix X` is honoured.
 install(CODE "
 	set(prefix \"\${CMAKE_INSTALL_PREFIX}\")

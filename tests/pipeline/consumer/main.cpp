@@ -1,6 +1,20 @@
-// Steps a world with a plastic hinge through the installed, patched Bullet.
+// Steps a world with a plastic hinge (a patched API) through the installed Bullet, then lists the shared
+// Bullet libraries the process has loaded (none when linked statically).
 #include <btBulletDynamicsCommon.h>
+#include <link.h>
 #include <cstdio>
+#include <cstring>
+
+static int printBulletLibrary(dl_phdr_info* info, size_t, void* count)
+{
+	const char* name = info->dlpi_name;
+	if (name != nullptr && (std::strstr(name, "libBullet") != nullptr || std::strstr(name, "libLinearMath") != nullptr))
+	{
+		std::printf("loaded: %s\n", name);
+		++*static_cast<int*>(count);
+	}
+	return 0;
+}
 
 int main()
 {
@@ -22,6 +36,11 @@ int main()
 	world.stepSimulation(btScalar(0.01), 0);
 	world.removeConstraint(&hinge);
 	world.removeRigidBody(&body);
-	std::printf("plastic rotation %g rad\n", double(hinge.getCurrentPlasticRotation()));
-	return hinge.getCurrentPlasticRotation() > 0 ? 0 : 1;
+	std::printf("plastic rotation %g rad, absorbed %g J\n", double(hinge.getCurrentPlasticRotation()), double(hinge.getAbsorbedEnergy()));
+
+	int loaded = 0;
+	dl_iterate_phdr(printBulletLibrary, &loaded);
+	if (loaded == 0)
+		std::printf("loaded: no shared Bullet library\n");
+	return hinge.getCurrentPlasticRotation() > 0 && hinge.getAbsorbedEnergy() > 0 ? 0 : 1;
 }
