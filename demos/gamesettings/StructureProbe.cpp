@@ -145,6 +145,7 @@ ProbeRun runRigid(const ProbeCase& c, JointMethod method, const ProbeSetting& se
 	run.elastic_j = e.elastic_j;
 	run.books = method != JointMethod::HingeMotor;
 	run.wall_s_per_step = run.internal_steps > 0 ? wall_s / run.internal_steps : 0;
+	run.solver_fallbacks = structure.solverFallbacks();
 	world.removeRigidBody(&support);
 	beams.clear();
 	return run;

@@ -48,6 +48,7 @@ struct ProbeRun
 	bool books = false;                 // the method books its plastic work (energy gain is meaningful)
 	double wall_s_per_step = 0;         // measured over the whole run
 	int internal_steps = 0;
+	int solver_fallbacks = 0;           // MLCP steps that fell back to sequential impulse
 	bool finite = true;
 };
 

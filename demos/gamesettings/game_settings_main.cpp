@@ -84,7 +84,7 @@ std::vector<ProbeSetting> settings(bool quick)
 struct Row
 {
 	double factor, hinge105, rest105_pct, other105, rot09, creep09, gain_pct, us_step, us_frame;
-	int steps_per_frame;
+	int steps_per_frame, fallbacks;
 	bool books;
 };
 
@@ -102,6 +102,7 @@ Row measure(const ProbeCase& c, JointMethod m, const ProbeSetting& s)
 	r.rot09 = below.max_rotation_rad;
 	r.creep09 = below.max_rotation_rad - below.max_rotation_after_1s_rad;
 	r.books = above.books;
+	r.fallbacks = above.solver_fallbacks + below.solver_fallbacks;
 	r.gain_pct = above.books && above.load_work_j > 0
 					 ? 100.0 * (above.kinetic_j + above.elastic_j + above.plastic_j - above.load_work_j) / above.load_work_j
 					 : NAN;
@@ -114,7 +115,7 @@ Row measure(const ProbeCase& c, JointMethod m, const ProbeSetting& s)
 
 std::string iterations(const ProbeSetting& s)
 {
-	if (s.world.solver == SolverKind::MlcpDantzig) return "direct";
+	if (s.world.solver == SolverKind::MlcpDantzig) return "direct (Dantzig)";
 	std::string it = std::to_string(s.world.iterations);
 	if (s.joint.override_iterations > 0) it += " (joints " + std::to_string(s.joint.override_iterations) + ")";
 	return it;
@@ -130,7 +131,7 @@ std::string line(const ProbeSetting& s, const ProbeCase& c, const Row& r)
 	o << "| " << s.name << " | " << c.name() << " | "
 	  << (r.factor <= kLowestFactor ? std::string("< 0.30 (< -70 %)") : fmt("%.3f", r.factor) + " (" + fmt("%+.1f %%", 100 * (r.factor - 1)) + ")") << " | " << fmt("%.3f rad", r.hinge105) << " (" << fmt("%+.1f %%", r.rest105_pct) << ")"
 	  << " | " << fmt("%.4f rad", r.other105) << " | " << fmt("%.4f rad", r.rot09) << " | " << fmt("%.4f rad", r.creep09) << " | "
-	  << (std::isnan(r.gain_pct) ? std::string("n/a (not booked)") : fmt("%+.2f %%", r.gain_pct)) << " | " << r.steps_per_frame << " | " << iterations(s) << " | "
+	  << (std::isnan(r.gain_pct) ? std::string("n/a (not booked)") : fmt("%+.2f %%", r.gain_pct)) << " | " << r.steps_per_frame << " | " << iterations(s) << (r.fallbacks ? ", " + std::to_string(r.fallbacks) + " SI fallbacks" : std::string()) << " | "
 	  << fmt("%.1f", r.us_step) << " | " << fmt("%.0f", r.us_frame) << " |\n";
 	return o.str();
 }
@@ -192,6 +193,22 @@ int main(int argc, char** argv)
 					std::cerr << l;
 					md << l;
 				}
+	}
+	if (!quick)
+	{
+		md << "\n## The toolkit default at other internal steps (plastic hinge)\n\n" << kHeader;
+		for (double step : {1.0 / 60.0, 1.0 / 120.0, 1.0 / 240.0, 1.0 / 480.0})
+		{
+			ProbeSetting s;
+			s.world.internal_step_s = step;
+			s.name = "toolkit default, 1/" + std::to_string(int(std::lround(1 / step))) + " s";
+			for (const ProbeCase& c : cases)
+			{
+				const std::string l = line(s, c, measure(c, JointMethod::PlasticHinge, s));
+				std::cerr << l;
+				md << l;
+			}
+		}
 	}
 	if (outPath.empty())
 		std::cout << md.str();

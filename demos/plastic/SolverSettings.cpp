@@ -72,6 +72,11 @@ OwnedSolver::OwnedSolver(SolverKind kind)
 
 OwnedSolver::~OwnedSolver() = default;
 
+int OwnedSolver::fallbacks() const
+{
+	return m_mlcp ? static_cast<const btMLCPSolver*>(m_solver.get())->getNumFallbacks() : 0;
+}
+
 void configureWorld(btDynamicsWorld& world, const WorldSolverSettings& settings)
 {
 	if (settings.iterations < 1 || settings.iterations > 100000)

@@ -53,6 +53,8 @@ public:
 	explicit OwnedSolver(SolverKind kind);
 	~OwnedSolver();
 	btConstraintSolver* get() { return m_solver.get(); }
+	// steps in which the MLCP solver failed and fell back to sequential impulse (btMLCPSolver::getNumFallbacks); 0 for SI
+	int fallbacks() const;
 
 private:
 	std::unique_ptr<btMLCPSolverInterface> m_mlcp;
@@ -72,6 +74,7 @@ public:
 	StructureWorld(const StructureWorld&) = delete;
 	StructureWorld& operator=(const StructureWorld&) = delete;
 	btDiscreteDynamicsWorld& world() { return *m_world; }
+	int solverFallbacks() const { return m_solver.fallbacks(); }
 	const WorldSolverSettings& settings() const { return m_settings; }
 	// stepSimulation(frame, enough substeps, internal step); returns the internal steps taken
 	int stepFrame(double frame_s);
