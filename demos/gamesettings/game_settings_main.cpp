@@ -64,9 +64,9 @@ std::vector<ProbeSetting> settings(bool quick)
 			s.world.solver = SolverKind::MlcpDantzig;
 			s.joint.warm_starting_factor = 1.0;
 		});
-		with("joint warm start 0.85 (0014)", [](ProbeSetting& s) { s.joint.warm_starting_factor = 0.85; });
+		with("joint warm start 0.85 (0020)", [](ProbeSetting& s) { s.joint.warm_starting_factor = 0.85; });
 	}
-	with("joint warm start 1.0 (0014)", [](ProbeSetting& s) { s.joint.warm_starting_factor = 1.0; });
+	with("joint warm start 1.0 (0020)", [](ProbeSetting& s) { s.joint.warm_starting_factor = 1.0; });
 	if (!quick)
 	{
 		with("warm start 1.0 + split correction", [](ProbeSetting& s) {

@@ -15,7 +15,7 @@ namespace plastic
 // What a joint asks of the solver; the joint factory applies it to every joint it makes.
 struct JointSolverSettings
 {
-	// rows of the joint start each step at this factor times their previous impulses (patch 0014,
+	// rows of the joint start each step at this factor times their previous impulses (patch 0020,
 	// btTypedConstraint::setWarmStartingFactor); 0 = off, as upstream
 	double warm_starting_factor = 0.0;
 	// btTypedConstraint::setOverrideNumSolverIterations: 0 = the world's iterations
