@@ -210,6 +210,18 @@ int main(int argc, char** argv)
 			}
 		}
 	}
+	if (!quick)
+	{
+		md << "\n## Longer chains: the direct solve's cost (plastic hinge, 1/240 s)\n\n" << kHeader;
+		for (int segments : {16, 32})
+			for (const ProbeSetting& s : {upstream(), ProbeSetting{"toolkit default", false, WorldSolverSettings(), JointSolverSettings()}})
+			{
+				const ProbeCase c{Structure::Cantilever, segments};
+				const std::string l = line(s, c, measure(c, JointMethod::PlasticHinge, s));
+				std::cerr << l;
+				md << l;
+			}
+	}
 	if (outPath.empty())
 		std::cout << md.str();
 	else
