@@ -36,7 +36,8 @@ Columns:
   energy (drift the joints did not book); positive: energy gained. The hinge-motor stand-in and the multibody
   motors book nothing.
 - **us/step**: wall time of `stepSimulation` per internal step, measured by the program over the 3 s run at 0.9
-  (std::chrono around each step; one run, a shared 2-core machine: +-30 % run to run); us/frame = x steps per frame.
+  (std::chrono around each step; one run on a shared 2-core machine: a figure can differ up to 2x between runs,
+  compare rows of one run); us/frame = x steps per frame.
   "SI fallbacks": steps in which btMLCPSolver's Dantzig solve failed and it used sequential impulse instead.
 
 HEAD
