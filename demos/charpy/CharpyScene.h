@@ -9,6 +9,7 @@
 #include "CharpyParameters.h"
 #include "CharpySection.h"
 
+class btCollisionShape;
 class btDiscreteDynamicsWorld;
 class btRigidBody;
 class btTypedConstraint;
@@ -67,6 +68,7 @@ private:
 	void destroy();  // removes and deletes everything created so far
 	void createWorld();
 	void createAnvils();
+	btCollisionShape* roundedAnvil(double side);  // the anvil at side * z > 0 with a rounded (and tapered) inner edge
 	void createSpecimen();
 	void createJoints();
 	void createHammer();
@@ -95,6 +97,7 @@ private:
 	double m_maxPenetration_m = 0;
 	double m_maxSpeed_m_s = 0;
 	double m_maxDistance_m = 0;
+	double m_savedGjkLengthScale = 0;  // gVoronoiSimplexLengthScale before this scene set it
 	double m_anvilTop_m = 0;           // highest point of the anvils (AABB)
 	std::vector<bool> m_partPassed;    // the part has got behind the anvils' front plane
 	bool m_overTheTop = false;
