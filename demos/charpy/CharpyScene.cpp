@@ -164,11 +164,6 @@ void CharpyScene::destroy()
 	m_impl->motionStates.clear();
 	m_impl->shapes.clear();
 	m_world.reset();
-	if (m_savedGjkLengthScale > 0)
-	{
-		gVoronoiSimplexLengthScale = btScalar(m_savedGjkLengthScale);
-		m_savedGjkLengthScale = 0;
-	}
 }
 
 void CharpyScene::createWorld()
@@ -177,10 +172,6 @@ void CharpyScene::createWorld()
 														&m_impl->collisionConfiguration);
 	m_world->setGravity(btVector3(0, btScalar(-kGravity_m_s2), 0));
 	m_world->getSolverInfo().m_numIterations = m_parameters.solver_iterations;
-	// GJK's simplex tolerances are absolute (tuned for metre-sized objects: a 1 cm equal-vertex distance, a 1e-4 m^3
-	// degenerate tetrahedron); scaled to the specimen, as the collision margins are (patch 0013). Restored in destroy().
-	m_savedGjkLengthScale = gVoronoiSimplexLengthScale;
-	gVoronoiSimplexLengthScale = btScalar(m_parameters.specimen_width_m);
 }
 
 void CharpyScene::createAnvils()
@@ -573,7 +564,14 @@ void CharpyScene::internalStep(double h_s)
 			joint->setBreakingImpulseThreshold(btScalar(m_parameters.brittle_breaking_force_n) * h);
 		}
 	}
+	// GJK's simplex tolerances are absolute, tuned for metre-sized objects (a 1 cm equal-vertex distance, a 1e-4 m^3
+	// degenerate tetrahedron): for the millimetre edges they stop GJK early with distances off by up to millimetres.
+	// Scaled to the specimen for this scene's steps, as its collision margins are (patch 0013); a process-wide
+	// setting, so it is put back after every step.
+	const btScalar gjkLengthScale = gVoronoiSimplexLengthScale;
+	gVoronoiSimplexLengthScale = btScalar(m_parameters.specimen_width_m);
 	m_world->stepSimulation(h, 0);
+	gVoronoiSimplexLengthScale = gjkLengthScale;
 	m_time_s += h_s;
 	m_internalSteps++;
 	trackAfterStep(h_s);

@@ -97,7 +97,6 @@ private:
 	double m_maxPenetration_m = 0;
 	double m_maxSpeed_m_s = 0;
 	double m_maxDistance_m = 0;
-	double m_savedGjkLengthScale = 0;  // gVoronoiSimplexLengthScale before this scene set it
 	double m_anvilTop_m = 0;           // highest point of the anvils (AABB)
 	std::vector<bool> m_partPassed;    // the part has got behind the anvils' front plane
 	bool m_overTheTop = false;
