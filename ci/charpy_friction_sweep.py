@@ -20,7 +20,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from charpy_friction_model import CharpyFrictionModel, STANDARD  # noqa: E402
 
 GEOMETRIES = {"standard": ["--geometry=standard"],
-              "standard, ISO anvils": ["--geometry=standard", "--anvil-radius=0.001", "--anvil-taper=0.192"],
+              "standard (ISO anvils)": ["--geometry=standard", "--anvil-radius=0.001", "--anvil-taper=0.192"],
               "thesis": ["--geometry=thesis"]}
 FIELDS = ["geometry", "mu", "loss_J", "plastic_J", "passed", "over_the_top", "accuracy", "steps", "model_J",
           "deviation_pct"]
