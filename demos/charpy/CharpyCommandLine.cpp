@@ -62,6 +62,8 @@ const std::map<std::string, std::pair<Setter, const char*>>& valueFlags()
 		{"notch-depth", {number(&CharpyParameters::notch_depth_m), "M  default 0.002"}},
 		{"anvil-gap", {number(&CharpyParameters::anvil_gap_m), "M  default 0.04"}},
 		{"anvil-width", {number(&CharpyParameters::anvil_width_m), "M  default 0.04"}},
+		{"anvil-radius", {number(&CharpyParameters::anvil_radius_m), "M  radius of the anvils' inner edges (ISO 148-1: 0.001), 0 = sharp (default)"}},
+		{"anvil-taper", {number(&CharpyParameters::anvil_taper_rad), "RAD  taper of the gap behind rounded edges (ISO 148-1: 0.192), default 0"}},
 		{"striker-radius", {number(&CharpyParameters::striker_radius_m), "M  striker edge radius, 0 = flat nose (default)"}},
 		{"hammer-mass", {number(&CharpyParameters::hammer_mass_kg), "KG  default 19.5"}},
 		{"hammer-thickness", {number(&CharpyParameters::hammer_thickness_m), "M  0 = no hammer, default 0.02"}},

@@ -1,5 +1,6 @@
 #include "CharpyParameters.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -49,6 +50,15 @@ std::vector<std::string> validateCharpyParameters(const CharpyParameters& p)
 	}
 	requireRange(errors, "anvil-gap", p.anvil_gap_m, 1e-3, p.specimen_length_m * 0.98, true, "m (below the specimen length)");
 	requireRange(errors, "anvil-width", p.anvil_width_m, 1e-3, 1, true, "m");
+	requireRange(errors, "anvil-radius", p.anvil_radius_m, 0, std::min(p.specimen_width_m, p.anvil_width_m) / 2, true,
+				 "m (0 = sharp; up to min(specimen-width, anvil-width) / 2)");
+	requireRange(errors, "anvil-taper", p.anvil_taper_rad, 0, 0.5, true, "rad (ISO 148-1: 0.192)");
+	if (p.anvil_taper_rad > 0 && !(p.anvil_radius_m > 0))
+	{
+		std::ostringstream out;
+		out << "anvil-taper: " << p.anvil_taper_rad << " needs anvil-radius > 0 (the taper leaves the rounded edge)";
+		errors.push_back(out.str());
+	}
 	requireRange(errors, "hammer-mass", p.hammer_mass_kg, 0, 1e5, false, "kg");
 	requireRange(errors, "hammer-length", p.hammer_length_m, 0.01, 10, true, "m");
 	requireRange(errors, "hammer-height", p.hammer_height_m, 0.01, 10, true, "m");

@@ -25,10 +25,12 @@ struct CharpyParameters
 	double specimen_bottom_y_m = 0.2;
 	int parts = 2;  // even: a joint sits at the notch (method rigid uses one body)
 
-	// anvils: 40 mm apart as in ISO 148-1; their edges are sharp (the standard rounds them to 1 mm and tapers the gap
-	// by 11 degrees: with rounded edges Bullet's contacts were erratic, see CHANGES.md 0.3.0)
-	double anvil_gap_m = 0.040;    // open space between the anvils along Z
+	// anvils: 40 mm apart as in ISO 148-1, which rounds their inner edges to 1 mm and tapers the gap behind them by
+	// 11 degrees
+	double anvil_gap_m = 0.040;    // open space between the anvils along Z (at its narrowest)
 	double anvil_width_m = 0.040;  // each anvil along Z
+	double anvil_radius_m = 0.0;   // radius of the anvils' inner edges (ISO 148-1: 1 mm); 0 = sharp box edges
+	double anvil_taper_rad = 0.0;  // the gap widens behind the rounded edges by this angle (ISO 148-1: 11 degrees)
 
 	// hammer: a steel blade swinging in the X-Y plane through the gap
 	double hammer_mass_kg = 19.5;

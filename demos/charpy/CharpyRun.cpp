@@ -26,6 +26,8 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	r.impact_speed_m_s = scene.impactSpeed_m_s();
 	r.friction = parameters.friction;
 	r.striker_radius_m = parameters.striker_radius_m;
+	r.anvil_radius_m = parameters.anvil_radius_m;
+	r.anvil_taper_rad = parameters.anvil_taper_rad;
 	if (history)
 	{
 		*history << "time_s,potential_J,kinetic_J,elastic_J,total_J,plastic_work_J,bend_angle_rad,hammer_angle_rad\n";
@@ -101,7 +103,7 @@ std::string toJson(const CharpyResult& r)
 		<< ",\"bend_angle_rad\":" << number(r.bend_angle_rad)
 		<< ",\"end_bend_angle_rad\":" << number(r.end_bend_angle_rad) << ",\"impact_speed_m_s\":" << number(r.impact_speed_m_s)
 		<< ",\"friction\":" << number(r.friction) << ",\"striker_radius_m\":" << number(r.striker_radius_m)
-		<< ",\"anvil_edge_radius_m\":0"
+		<< ",\"anvil_edge_radius_m\":" << number(r.anvil_radius_m) << ",\"anvil_taper_rad\":" << number(r.anvil_taper_rad)
 		<< ",\"broken\":" << flag(r.broken) << ",\"passed_anvils\":" << flag(r.passed_anvils) << ",\"over_the_top\":" << flag(r.over_the_top)
 		<< ",\"max_bend_rad\":" << number(r.max_bend_rad) << ",\"tunnelled\":" << flag(r.tunnelled) << ",\"finite\":" << flag(r.finite)
 		<< ",\"max_energy_gain_J\":" << number(r.max_energy_gain_J) << ",\"max_penetration_m\":" << number(r.max_penetration_m)

@@ -29,6 +29,8 @@ struct CharpyResult
 	double impact_speed_m_s = 0;
 	double friction = 0;  // combined Coulomb coefficient of the specimen contacts
 	double striker_radius_m = 0;  // 0 = the thesis' flat nose
+	double anvil_radius_m = 0;    // 0 = sharp anvil edges
+	double anvil_taper_rad = 0;   // taper of the gap behind rounded edges
 	double max_energy_gain_J = 0;
 	double max_penetration_m = 0;
 	double end_bend_angle_rad = 0;  // rotation of the last part relative to the first at the end, about any axis

@@ -6,6 +6,7 @@
 
 #include "Section.h"
 #include "btBulletDynamicsCommon.h"
+#include "BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h"
 #include "BulletDynamics/ConstraintSolver/btGeneric6DofSpring2Constraint.h"
 
 namespace
@@ -183,11 +184,55 @@ void CharpyScene::createAnvils()
 		// the anvil behind the specimen (x < 0) and a ledge under it that carries its weight
 		btTransform anvil = translation(-kAnvilDepth_m / 2.0, y0 + b / 2.0, side * zCentre);
 		btTransform ledge = translation(b, y0 - 0.01, side * zCentre);
-		m_anvils.push_back(m_impl->addBody(m_world.get(), m_impl->box(kAnvilDepth_m / 2.0, 2.0 * b, p.anvil_width_m / 2.0), 0,
-										   btVector3(0, 0, 0), anvil, 1.0, 0.0));
+		btCollisionShape* shape = p.anvil_radius_m > 0 ? roundedAnvil(side) : m_impl->box(kAnvilDepth_m / 2.0, 2.0 * b, p.anvil_width_m / 2.0);
+		if (p.anvil_radius_m > 0)
+		{
+			anvil = translation(0, y0 + b / 2.0, 0);  // the compound's children are placed in world X and Z
+		}
+		m_anvils.push_back(m_impl->addBody(m_world.get(), shape, 0, btVector3(0, 0, 0), anvil, 1.0, 0.0));
 		m_anvils.push_back(m_impl->addBody(m_world.get(), m_impl->box(b, 0.01, p.anvil_width_m / 2.0), 0, btVector3(0, 0, 0),
 										   ledge, 1.0, 0.0));
 	}
+}
+
+btCollisionShape* CharpyScene::roundedAnvil(double side)
+{
+	// ISO 148-1 anvil, in the X-Z plane (extruded along Y): the front face x = 0 for |z| >= gz + r, the inner edge a
+	// circle of radius r centred at (-r, gz + r) (the gap is anvil_gap_m at its narrowest, x = -r), and behind it the
+	// inner face leaves the circle tapered by anvil_taper_rad (0: parallel to X) back to x = -depth. Children: the
+	// edge is a capsule (exact in GJK; a btCylinderShape is not), the faces are boxes (exact box-box contacts).
+	const CharpyParameters& p = m_parameters;
+	const double r = p.anvil_radius_m, taper = p.anvil_taper_rad, gz = p.anvil_gap_m / 2.0, hy = 2.0 * p.specimen_width_m;
+	const double outer = gz + p.anvil_width_m;
+	auto* compound = new btCompoundShape();
+	auto add = [&](const btTransform& t, btCollisionShape* child) {
+		compound->addChildShape(t, child);
+		m_impl->shapes.push_back(child);
+	};
+	// the edge: a capsule along Y as tall as the anvil
+	add(translation(-r, 0, side * (gz + r)), new btCapsuleShape(btScalar(r), btScalar(2.0 * hy - 2.0 * r)));
+	// where the tapered face leaves the circle (normal (-sin, -cos) in (x, |z|)), and where it crosses |z| = gz + r
+	const double s = std::sin(taper), c = std::cos(taper);
+	const double leaveX = -r - r * s, leaveZ = gz + r - r * c;
+	const double blockBack = taper > 0 ? -r - r / s : -kAnvilDepth_m;  // the front block ends where the taper cuts it
+	// the front block: x in [blockBack, 0], |z| in [gz + r, outer]
+	add(translation(blockBack / 2.0, 0, side * (gz + r + outer) / 2.0), m_impl->box(-blockBack / 2.0, hy, (outer - gz - r) / 2.0));
+	// the inner face behind the edge: a box whose inner face runs from the leaving point back to x = -depth along
+	// (-cos, sin), thick enough to close the anvil but with its front end hidden in the edge and the block
+	const double length = (leaveX + kAnvilDepth_m) / c;
+	double thickness = 5.0 * r;
+	if (taper > 0)
+	{
+		thickness = std::min(thickness, 0.9 * -leaveX / s);
+	}
+	const double cx = leaveX - 0.5 * length * c + 0.5 * thickness * s;
+	const double cz = leaveZ + 0.5 * length * s + 0.5 * thickness * c;
+	btTransform face = translation(cx, 0, side * cz);
+	face.setRotation(btQuaternion(btVector3(0, 1, 0), btScalar(side * taper)));
+	btBoxShape* faceBox = m_impl->box(length / 2.0, hy, thickness / 2.0);
+	faceBox->setMargin(btScalar(std::min(kMargin_m, thickness / 4.0)));
+	add(face, faceBox);
+	return compound;
 }
 
 void CharpyScene::createSpecimen()
@@ -519,7 +564,14 @@ void CharpyScene::internalStep(double h_s)
 			joint->setBreakingImpulseThreshold(btScalar(m_parameters.brittle_breaking_force_n) * h);
 		}
 	}
+	// GJK's simplex tolerances are absolute, tuned for metre-sized objects (a 1 cm equal-vertex distance, a 1e-4 m^3
+	// degenerate tetrahedron): for the millimetre edges they stop GJK early with distances off by up to millimetres.
+	// Scaled to the specimen for this scene's steps, as its collision margins are (patch 0018); a process-wide
+	// setting, so it is put back after every step.
+	const btScalar gjkLengthScale = gVoronoiSimplexLengthScale;
+	gVoronoiSimplexLengthScale = btScalar(m_parameters.specimen_width_m);
 	m_world->stepSimulation(h, 0);
+	gVoronoiSimplexLengthScale = gjkLengthScale;
 	m_time_s += h_s;
 	m_internalSteps++;
 	trackAfterStep(h_s);

@@ -9,6 +9,7 @@
 #include "CharpyParameters.h"
 #include "CharpySection.h"
 
+class btCollisionShape;
 class btDiscreteDynamicsWorld;
 class btRigidBody;
 class btTypedConstraint;
@@ -67,6 +68,7 @@ private:
 	void destroy();  // removes and deletes everything created so far
 	void createWorld();
 	void createAnvils();
+	btCollisionShape* roundedAnvil(double side);  // the anvil at side * z > 0 with a rounded (and tapered) inner edge
 	void createSpecimen();
 	void createJoints();
 	void createHammer();

@@ -26,7 +26,11 @@ struct Scene
 	// A box of half extents h (m), mass (kg; 0 = static) at position (m).
 	btRigidBody* box(const btVector3& h, btScalar mass, const btVector3& position)
 	{
-		shapes.push_back(std::make_unique<btBoxShape>(h));
+		return body(std::make_unique<btBoxShape>(h), mass, position);
+	}
+	btRigidBody* body(std::unique_ptr<btCollisionShape> shape, btScalar mass, const btVector3& position)
+	{
+		shapes.push_back(std::move(shape));
 		btVector3 inertia(0, 0, 0);
 		if (mass > 0) shapes.back()->calculateLocalInertia(mass, inertia);
 		btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, shapes.back().get(), inertia);
@@ -117,6 +121,15 @@ int main()
 	stack->setStiffness(1, 1e7);
 	stack->setAngularLowerLimit(btVector3(0, 0, 0));
 	stack->setAngularUpperLimit(btVector3(0, 0, 0));
+
+	// Convex shapes that collide through GJK (btConvexConvexAlgorithm, btVoronoiSimplexSolver: patch 0018's global
+	// stays at its default): a capsule, a cylinder and a convex hull tumbling onto the ground and each other.
+	btRigidBody* capsule = s.body(std::make_unique<btCapsuleShape>(0.1, 0.4), 1, btVector3(0.5, 0.6, -1.5));
+	capsule->setAngularVelocity(btVector3(1, 0.5, 2));
+	btRigidBody* cylinder = s.body(std::make_unique<btCylinderShape>(btVector3(0.15, 0.2, 0.15)), 1, btVector3(0.6, 1.2, -1.4));
+	cylinder->setAngularVelocity(btVector3(-2, 1, 0.3));
+	const btScalar hullPoints[] = {0.2, 0, 0, -0.1, 0.17, 0, -0.1, -0.17, 0, 0, 0, 0.25, 0.05, 0.05, -0.15};
+	s.body(std::make_unique<btConvexHullShape>(hullPoints, 5, int(3 * sizeof(btScalar))), 1, btVector3(0.4, 1.8, -1.6));
 
 	const btScalar dt = 1.0 / 240;
 	for (int second = 1; second <= 4; second++)
