@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "Section.h"
+#include "SubstepPolicy.h"
 #include "btBulletDynamicsCommon.h"
 #include "BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h"
 #include "BulletDynamics/ConstraintSolver/btGeneric6DofSpring2Constraint.h"
@@ -116,6 +117,7 @@ CharpyScene::CharpyScene(const CharpyParameters& parameters)
 		}
 		throw std::invalid_argument(text);
 	}
+	m_substeps = plastic::ContactSubstepPolicy(plastic::ContactSubstepSettings{parameters.contact_substep_s});
 	m_section = computeCharpySection(parameters);
 	m_fullSectionMoment_nm = sectionDofs(parameters, parameters.specimen_width_m, 1.0).maxForce[3];
 	m_impl = std::make_unique<Impl>();
@@ -475,41 +477,13 @@ void CharpyScene::createHammer()
 
 bool CharpyScene::nearContact(double horizon_s) const
 {
-	auto reach = [horizon_s](const btRigidBody* body, btVector3& lo, btVector3& hi) {
-		body->getAabb(lo, hi);
-		btScalar radius = (hi - lo).length() / 2;
-		btScalar travel = btScalar((body->getLinearVelocity().length() + body->getAngularVelocity().length() * radius) * horizon_s);
-		btVector3 grow(travel + btScalar(0.001), travel + btScalar(0.001), travel + btScalar(0.001));
-		lo -= grow;
-		hi += grow;
-	};
-	auto overlap = [](const btVector3& aLo, const btVector3& aHi, const btVector3& bLo, const btVector3& bHi) {
-		return aLo.x() <= bHi.x() && bLo.x() <= aHi.x() && aLo.y() <= bHi.y() && bLo.y() <= aHi.y() && aLo.z() <= bHi.z() && bLo.z() <= aHi.z();
-	};
-	btVector3 hLo, hHi;
+	std::vector<const btCollisionObject*> movers(m_parts.begin(), m_parts.end());
+	std::vector<const btCollisionObject*> others(m_anvils.begin(), m_anvils.end());
 	if (m_hammer)
 	{
-		reach(m_hammer, hLo, hHi);
+		others.push_back(m_hammer);
 	}
-	for (const btRigidBody* part : m_parts)
-	{
-		btVector3 pLo, pHi;
-		reach(part, pLo, pHi);
-		if (m_hammer && overlap(pLo, pHi, hLo, hHi))
-		{
-			return true;
-		}
-		for (const btRigidBody* anvil : m_anvils)
-		{
-			btVector3 aLo, aHi;
-			anvil->getAabb(aLo, aHi);
-			if (overlap(pLo, pHi, aLo, aHi))
-			{
-				return true;
-			}
-		}
-	}
-	return false;
+	return plastic::mayTouchWithin(movers, others, horizon_s);
 }
 
 void CharpyScene::step()
@@ -520,27 +494,8 @@ void CharpyScene::step()
 	{
 		frame = p.auto_dt_coarse_s;
 	}
-	// Only the part of the frame in or near contact is substepped: the rest of the frame is cut in halves until a
-	// piece reaches no contact within its own length; where even a contact substep reaches one, the step is a
-	// contact substep. The contact test is re-made after every internal step.
-	double remaining = frame;
-	while (remaining > 1e-12 * frame)
-	{
-		double piece = remaining;
-		if (p.contact_substep_s > 0)
-		{
-			while (piece > p.contact_substep_s && nearContact(piece))
-			{
-				piece /= 2;
-			}
-			if (piece < p.contact_substep_s)
-			{
-				piece = std::min(remaining, p.contact_substep_s);
-			}
-		}
-		internalStep(piece);
-		remaining -= piece;
-	}
+	m_substeps.advance(
+		frame, [this](double horizon_s) { return nearContact(horizon_s); }, [this](double h_s) { internalStep(h_s); });
 	m_lastFrameStep_s = frame;
 }
 

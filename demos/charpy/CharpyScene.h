@@ -8,6 +8,7 @@
 
 #include "CharpyParameters.h"
 #include "CharpySection.h"
+#include "SubstepPolicy.h"
 
 class btCollisionShape;
 class btDiscreteDynamicsWorld;
@@ -78,6 +79,7 @@ private:
 	void trackAfterStep(double h_s);
 
 	CharpyParameters m_parameters;
+	plastic::ContactSubstepPolicy m_substeps{plastic::ContactSubstepSettings{0}};  // the frame's internal steps
 	CharpySection m_section;
 	double m_fullSectionMoment_nm = 0;  // plastic moment of the unnotched section (joints away from the notch)
 	std::unique_ptr<Impl> m_impl;  // Bullet's world objects, shapes and bodies
