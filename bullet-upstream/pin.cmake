@@ -17,7 +17,9 @@ set(BULLET_UPSTREAM_SHA256 "042879db8d101ac7590dee475fc6aded508b85fe1273fdbbfde1
 set(BULLET_UPSTREAM_TOPDIR "pybullet-3.2.7")
 
 # What is unpacked (paths relative to the top folder). The libraries need the
-# first group; the demo app (OpenGL / OSMesa) needs the second (BulletSoftBody
+# first group (with upstream's .bullet file loader and world importer, which patch
+# 0015 teaches the plastic hinge and which only the tests build); the demo app
+# (OpenGL / OSMesa) needs the second (BulletSoftBody
 # because the browser's OpenGLGuiHelper draws soft bodies; three headers that
 # OpenGLExampleBrowser.cpp includes). Both are always unpacked, since patches
 # 0008-0010 change files of the second group; only what a target needs is built.
@@ -30,7 +32,9 @@ set(BULLET_UPSTREAM_LIBRARY_PATHS
 	src/btBulletDynamicsCommon.h
 	src/btBulletCollisionAll.cpp
 	src/btBulletDynamicsAll.cpp
-	src/btLinearMathAll.cpp)
+	src/btLinearMathAll.cpp
+	Extras/Serialize/BulletFileLoader
+	Extras/Serialize/BulletWorldImporter)
 set(BULLET_UPSTREAM_DEMO_PATHS
 	src/Bullet3Common
 	src/BulletSoftBody
