@@ -14,6 +14,7 @@
 #include "btBulletFile.h"
 #include "bDNA.h"
 #include "btBulletWorldImporter.h"
+#include "BulletDynamics/ConstraintSolver/bt6DofElasticPlastic2Constraint.h"
 
 extern bool gDisableDeactivation;
 
@@ -77,7 +78,9 @@ struct World
 // The scene: far apart in z, nothing touches. B hangs on a static base by a plastic hinge that yields under its
 // weight and breaks after 0.8 rad; C hangs on B's tip by a softer plastic hinge (other lock parameters, no frame
 // offset, split position correction); D hangs on the world by a single-body plastic hinge; E is a plain hinge locked
-// at 0 with a locked-moment cap below its weight's moment, so it slips.
+// at 0 with a locked-moment cap below its weight's moment, so it slips. F hangs on a static base by an
+// elastic-plastic Spring2 constraint whose Z rotation is an elastic spring that yields; G on the world by one whose Z
+// rotation is rigid-plastic; H on a static base by a plain Spring2 constraint whose locked Z rotation has a row cap.
 void buildScene(World& w)
 {
 	const btVector3 beam(btScalar(0.5), btScalar(0.0625), btScalar(0.0625));
@@ -105,6 +108,33 @@ void buildScene(World& w)
 	btHingeConstraint* he = w.add(new btHingeConstraint(*e, btVector3(btScalar(-0.5), 0, 0), z));
 	he->setLimit(0, 0);
 	he->setMaxLockedMoment(5);
+
+	btTransform frameA, frameB;
+	frameA.setIdentity();
+	frameB.setIdentity();
+	frameB.setOrigin(btVector3(btScalar(-0.5), 0, 0));
+	btRigidBody* baseF = w.addBox(btVector3(btScalar(0.125), btScalar(0.125), btScalar(0.125)), 0, btVector3(0, 0, 9));
+	btRigidBody* f = w.addBox(beam, 2, btVector3(btScalar(0.5), 0, 9));
+	bt6DofElasticPlastic2Constraint* ef = w.add(new bt6DofElasticPlastic2Constraint(*baseF, *f, frameA, frameB));
+	btRigidBody* g = w.addBox(beam, 2, btVector3(btScalar(0.5), 0, 12));
+	bt6DofElasticPlastic2Constraint* eg = w.add(new bt6DofElasticPlastic2Constraint(*g, frameB));
+	for (int i = 0; i < 6; i++)
+	{
+		for (bt6DofElasticPlastic2Constraint* c : {ef, eg})
+		{
+			c->setStiffness(i, 0, false);  // rigid-plastic
+			c->setMaxForce(i, btScalar(1e6));
+		}
+	}
+	ef->setStiffness(5, 50, false);  // elastic below the cap: 0.2 s period, about 50 steps
+	ef->setMaxForce(5, 4);
+	ef->setMaxPlasticRotation(btScalar(1.2));
+	eg->setMaxForce(5, 6);
+
+	btRigidBody* baseH = w.addBox(btVector3(btScalar(0.125), btScalar(0.125), btScalar(0.125)), 0, btVector3(0, 0, 15));
+	btRigidBody* h = w.addBox(beam, 2, btVector3(btScalar(0.5), 0, 15));
+	btGeneric6DofSpring2Constraint* sh = w.add(new btGeneric6DofSpring2Constraint(*baseH, *h, frameA, frameB));
+	sh->setMaxRowForce(5, 5);
 }
 
 // Everything the continuation depends on or books, as raw numbers: every body's pose, velocities, mass and
@@ -139,6 +169,25 @@ std::vector<btScalar> snapshot(btDiscreteDynamicsWorld& world)
 			s.push_back(hinge->getUseFrameOffset() ? 1 : 0);
 			put(hinge->getBFrame().getOrigin());
 			for (int r = 0; r < 3; r++) put(hinge->getBFrame().getBasis()[r]);
+		}
+		if (btGeneric6DofSpring2Constraint* dof = dynamic_cast<btGeneric6DofSpring2Constraint*>(c))
+		{
+			for (int k = 0; k < 6; k++) s.push_back(dof->getMaxRowForce(k));
+			put(dof->getTranslationalLimitMotor()->m_equilibriumPoint);
+			put(dof->getTranslationalLimitMotor()->m_springStiffness);
+			for (int k = 0; k < 3; k++)
+			{
+				const btRotationalLimitMotor2* motor = dof->getRotationalLimitMotor(k);
+				s.insert(s.end(), {motor->m_equilibriumPoint, motor->m_springStiffness, motor->m_loLimit, motor->m_hiLimit});
+			}
+			put(dof->getFrameOffsetA().getOrigin());
+			for (int r = 0; r < 3; r++) put(dof->getFrameOffsetA().getBasis()[r]);
+		}
+		if (bt6DofElasticPlastic2Constraint* ep2 = dynamic_cast<bt6DofElasticPlastic2Constraint*>(c))
+		{
+			const btPlasticConstraintState& p = ep2->getPlasticState();
+			s.insert(s.end(), {p.getCurrentPlasticRotation(), p.getCurrentPlasticStrain(), p.getAbsorbedEnergy(), p.getElasticEnergy(),
+								p.getMaxPlasticRotation(), p.getMaxPlasticStrain(), p.getYieldTolerance(), p.getFrequencyRatio()});
 		}
 		if (btPlasticHingeConstraint* plastic = dynamic_cast<btPlasticHingeConstraint*>(c))
 		{
@@ -221,7 +270,7 @@ TEST_F(SerializeRoundTrip, PlasticHingeAndCapSurviveSaveAndLoad)
 
 	World loaded;
 	load(save(original.world), loaded);
-	ASSERT_EQ(4, loaded.world.getNumConstraints());
+	ASSERT_EQ(7, loaded.world.getNumConstraints());
 	for (int i = 0; i < 3; i++)
 	{
 		btTypedConstraint* c = loaded.world.getConstraint(i);
@@ -247,16 +296,39 @@ TEST_F(SerializeRoundTrip, PlasticHingeAndCapSurviveSaveAndLoad)
 	ASSERT_NE(nullptr, he);
 	EXPECT_EQ(btScalar(5), he->getMaxLockedMoment());
 	EXPECT_TRUE(he->hasCappedLockedLimit());
+
+	for (int i = 4; i < 6; i++)
+	{
+		btTypedConstraint* c = loaded.world.getConstraint(i);
+		bt6DofElasticPlastic2Constraint* ep2 = dynamic_cast<bt6DofElasticPlastic2Constraint*>(c);
+		ASSERT_NE(nullptr, ep2) << "constraint " << i << " came back as a plain Spring2 constraint";
+		EXPECT_EQ(D6_SPRING_2_CONSTRAINT_TYPE, c->getConstraintType());
+		bt6DofElasticPlastic2Constraint* was = dynamic_cast<bt6DofElasticPlastic2Constraint*>(original.world.getConstraint(i));
+		for (int k = 0; k < 6; k++) EXPECT_EQ(was->getMaxForce(k), ep2->getMaxForce(k)) << k;
+		EXPECT_EQ(was->getCurrentPlasticRotation(), ep2->getCurrentPlasticRotation());
+		EXPECT_EQ(was->getAbsorbedEnergy(), ep2->getAbsorbedEnergy());
+		EXPECT_EQ(was->getMaxPlasticRotation(), ep2->getMaxPlasticRotation());
+		EXPECT_EQ(was->getRotationalLimitMotor(2)->m_equilibriumPoint, ep2->getRotationalLimitMotor(2)->m_equilibriumPoint);
+	}
+	EXPECT_GT(dynamic_cast<bt6DofElasticPlastic2Constraint*>(original.world.getConstraint(4))->getAbsorbedEnergy(), btScalar(0)) << "F must be mid-yield";
+	btTypedConstraint* hc6 = loaded.world.getConstraint(6);
+	ASSERT_EQ(nullptr, dynamic_cast<bt6DofElasticPlastic2Constraint*>(hc6));
+	btGeneric6DofSpring2Constraint* sh = dynamic_cast<btGeneric6DofSpring2Constraint*>(hc6);
+	ASSERT_NE(nullptr, sh);
+	EXPECT_EQ(btScalar(5), sh->getMaxRowForce(5));
+	EXPECT_EQ(SIMD_INFINITY, sh->getMaxRowForce(2));
+	EXPECT_TRUE(sh->hasMaxRowForce());
 }
 
 // Save mid-yield, load into a fresh world, continue: every step of the loaded world is bit-identical to the world that
-// was never saved, through B's break and C's and D's continued yield.
+// was never saved, through the breaks of B and F and the continued yield of C, D, F and G.
 TEST_F(SerializeRoundTrip, LoadedWorldContinuesBitIdentical)
 {
 	World original;
 	buildScene(original);
 	original.step(60);
 	std::vector<char> file = save(original.world);
+	ASSERT_TRUE(original.world.getConstraint(4)->isEnabled()) << "F must break after the save";
 	std::vector<std::vector<btScalar>> expected;
 	expected.push_back(snapshot(original.world));
 	for (int i = 0; i < 240; i++)
@@ -272,9 +344,16 @@ TEST_F(SerializeRoundTrip, LoadedWorldContinuesBitIdentical)
 		btPlasticHingeConstraint* h = dynamic_cast<btPlasticHingeConstraint*>(original.world.getConstraint(i));
 		std::printf("hinge %d: %.4f rad, %.4f J, enabled %d\n", i, double(h->getCurrentPlasticRotation()), double(h->getAbsorbedEnergy()), int(h->isEnabled()));
 	}
+	for (int i = 4; i < 6; i++)
+	{
+		bt6DofElasticPlastic2Constraint* e = dynamic_cast<bt6DofElasticPlastic2Constraint*>(original.world.getConstraint(i));
+		std::printf("elastic-plastic2 %d: %.4f rad, %.4f J plastic, %.4f J elastic, enabled %d\n", i, double(e->getCurrentPlasticRotation()),
+					double(e->getAbsorbedEnergy()), double(e->getElasticEnergy()), int(e->isEnabled()));
+	}
 	ASSERT_FALSE(hb->isEnabled()) << "B must break after the save";
 	ASSERT_GT(hc->getAbsorbedEnergy(), btScalar(0)) << "C must yield";
 	ASSERT_GT(hd->getAbsorbedEnergy(), btScalar(0)) << "D must yield";
+	ASSERT_FALSE(original.world.getConstraint(4)->isEnabled()) << "F must break after the save";
 
 	World loaded;
 	load(file, loaded);
