@@ -15,6 +15,7 @@
 #include "bDNA.h"
 #include "btBulletWorldImporter.h"
 #include "BulletDynamics/ConstraintSolver/bt6DofElasticPlastic2Constraint.h"
+#include "BulletDynamics/ConstraintSolver/bt6DofElasticPlasticConstraint.h"
 
 extern bool gDisableDeactivation;
 
@@ -80,7 +81,8 @@ struct World
 // offset, split position correction); D hangs on the world by a single-body plastic hinge; E is a plain hinge locked
 // at 0 with a locked-moment cap below its weight's moment, so it slips. F hangs on a static base by an
 // elastic-plastic Spring2 constraint whose Z rotation is an elastic spring that yields; G on the world by one whose Z
-// rotation is rigid-plastic; H on a static base by a plain Spring2 constraint whose locked Z rotation has a row cap.
+// rotation is rigid-plastic; H on a static base by a plain Spring2 constraint whose locked Z rotation has a row cap;
+// I and J like F and G, by elastic-plastic 6DOF spring constraints.
 void buildScene(World& w)
 {
 	const btVector3 beam(btScalar(0.5), btScalar(0.0625), btScalar(0.0625));
@@ -135,6 +137,25 @@ void buildScene(World& w)
 	btRigidBody* h = w.addBox(beam, 2, btVector3(btScalar(0.5), 0, 15));
 	btGeneric6DofSpring2Constraint* sh = w.add(new btGeneric6DofSpring2Constraint(*baseH, *h, frameA, frameB));
 	sh->setMaxRowForce(5, 5);
+
+	btRigidBody* baseI = w.addBox(btVector3(btScalar(0.125), btScalar(0.125), btScalar(0.125)), 0, btVector3(0, 0, 18));
+	btRigidBody* bi = w.addBox(beam, 2, btVector3(btScalar(0.5), 0, 18));
+	bt6DofElasticPlasticConstraint* ei = w.add(new bt6DofElasticPlasticConstraint(*baseI, *bi, frameA, frameB, true));
+	btRigidBody* bj = w.addBox(beam, 2, btVector3(btScalar(0.5), 0, 21));
+	bt6DofElasticPlasticConstraint* ej = w.add(new bt6DofElasticPlasticConstraint(*bj, frameB, true));
+	for (int i = 0; i < 6; i++)
+	{
+		for (bt6DofElasticPlasticConstraint* c : {ei, ej})
+		{
+			c->setStiffness(i, 0);  // rigid-plastic
+			c->setMaxForce(i, btScalar(1e6));
+		}
+	}
+	ei->setStiffness(5, 50);
+	ei->setMaxForce(5, 4);
+	ei->setMaxPlasticRotation(btScalar(1.2));
+	ej->setMaxForce(5, 6);
+	ej->setSplitPositionCorrection(true);
 }
 
 // Everything the continuation depends on or books, as raw numbers: every body's pose, velocities, mass and
@@ -142,7 +163,8 @@ void buildScene(World& w)
 std::vector<btScalar> snapshot(btDiscreteDynamicsWorld& world)
 {
 	std::vector<btScalar> s;
-	auto put = [&s](const btVector3& v) { s.insert(s.end(), {v.x(), v.y(), v.z()}); };
+	auto put = [&s](const btVector3& v)
+	{ s.insert(s.end(), {v.x(), v.y(), v.z()}); };
 	for (int i = 0; i < world.getNumCollisionObjects(); i++)
 	{
 		btRigidBody* body = btRigidBody::upcast(world.getCollisionObjectArray()[i]);
@@ -183,18 +205,28 @@ std::vector<btScalar> snapshot(btDiscreteDynamicsWorld& world)
 			put(dof->getFrameOffsetA().getOrigin());
 			for (int r = 0; r < 3; r++) put(dof->getFrameOffsetA().getBasis()[r]);
 		}
+		if (bt6DofElasticPlasticConstraint* ep = dynamic_cast<bt6DofElasticPlasticConstraint*>(c))
+		{
+			const btPlasticConstraintState& p = ep->getPlasticState();
+			for (int k = 0; k < 6; k++) s.insert(s.end(), {ep->getMaxForce(k), ep->getEquilibriumPoint(k)});
+			s.insert(s.end(), {p.getCurrentPlasticRotation(), p.getCurrentPlasticStrain(), p.getAbsorbedEnergy(), p.getElasticEnergy(),
+							   p.getMaxPlasticRotation(), p.getMaxPlasticStrain(), p.getYieldTolerance(), p.getFrequencyRatio(),
+							   btScalar(ep->getUseFrameOffset() ? 1 : 0)});
+			put(ep->getFrameOffsetA().getOrigin());
+			for (int r = 0; r < 3; r++) put(ep->getFrameOffsetA().getBasis()[r]);
+		}
 		if (bt6DofElasticPlastic2Constraint* ep2 = dynamic_cast<bt6DofElasticPlastic2Constraint*>(c))
 		{
 			const btPlasticConstraintState& p = ep2->getPlasticState();
 			s.insert(s.end(), {p.getCurrentPlasticRotation(), p.getCurrentPlasticStrain(), p.getAbsorbedEnergy(), p.getElasticEnergy(),
-								p.getMaxPlasticRotation(), p.getMaxPlasticStrain(), p.getYieldTolerance(), p.getFrequencyRatio()});
+							   p.getMaxPlasticRotation(), p.getMaxPlasticStrain(), p.getYieldTolerance(), p.getFrequencyRatio()});
 		}
 		if (btPlasticHingeConstraint* plastic = dynamic_cast<btPlasticHingeConstraint*>(c))
 		{
 			const btPlasticConstraintState& p = plastic->getPlasticState();
 			s.insert(s.end(), {plastic->getLockAngle(), plastic->getCurrentPlasticRotation(), plastic->getAbsorbedEnergy(),
-								p.getMaxPlasticRotation(), p.getMaxPlasticStrain(), p.getYieldTolerance(), p.getFrequencyRatio(),
-								p.getCurrentPlasticStrain(), p.getElasticEnergy()});
+							   p.getMaxPlasticRotation(), p.getMaxPlasticStrain(), p.getYieldTolerance(), p.getFrequencyRatio(),
+							   p.getCurrentPlasticStrain(), p.getElasticEnergy()});
 		}
 	}
 	return s;
@@ -270,7 +302,7 @@ TEST_F(SerializeRoundTrip, PlasticHingeAndCapSurviveSaveAndLoad)
 
 	World loaded;
 	load(save(original.world), loaded);
-	ASSERT_EQ(7, loaded.world.getNumConstraints());
+	ASSERT_EQ(9, loaded.world.getNumConstraints());
 	for (int i = 0; i < 3; i++)
 	{
 		btTypedConstraint* c = loaded.world.getConstraint(i);
@@ -318,10 +350,25 @@ TEST_F(SerializeRoundTrip, PlasticHingeAndCapSurviveSaveAndLoad)
 	EXPECT_EQ(btScalar(5), sh->getMaxRowForce(5));
 	EXPECT_EQ(SIMD_INFINITY, sh->getMaxRowForce(2));
 	EXPECT_TRUE(sh->hasMaxRowForce());
+
+	for (int i = 7; i < 9; i++)
+	{
+		btTypedConstraint* c = loaded.world.getConstraint(i);
+		bt6DofElasticPlasticConstraint* ep = dynamic_cast<bt6DofElasticPlasticConstraint*>(c);
+		ASSERT_NE(nullptr, ep) << "constraint " << i << " came back as a plain 6DOF spring constraint";
+		EXPECT_EQ(D6_SPRING_CONSTRAINT_TYPE, c->getConstraintType());
+		bt6DofElasticPlasticConstraint* was = dynamic_cast<bt6DofElasticPlasticConstraint*>(original.world.getConstraint(i));
+		for (int k = 0; k < 6; k++) EXPECT_EQ(was->getMaxForce(k), ep->getMaxForce(k)) << k;
+		EXPECT_EQ(was->getCurrentPlasticRotation(), ep->getCurrentPlasticRotation());
+		EXPECT_EQ(was->getAbsorbedEnergy(), ep->getAbsorbedEnergy());
+		EXPECT_EQ(was->getEquilibriumPoint(5), ep->getEquilibriumPoint(5));
+		EXPECT_EQ(was->getSplitPositionCorrection(), ep->getSplitPositionCorrection());
+	}
+	EXPECT_GT(dynamic_cast<bt6DofElasticPlasticConstraint*>(original.world.getConstraint(7))->getAbsorbedEnergy(), btScalar(0)) << "I must be mid-yield";
 }
 
 // Save mid-yield, load into a fresh world, continue: every step of the loaded world is bit-identical to the world that
-// was never saved, through the breaks of B and F and the continued yield of C, D, F and G.
+// was never saved, through the breaks of B, F and I and the continued yield of C, D, F, G, I and J.
 TEST_F(SerializeRoundTrip, LoadedWorldContinuesBitIdentical)
 {
 	World original;
@@ -329,6 +376,7 @@ TEST_F(SerializeRoundTrip, LoadedWorldContinuesBitIdentical)
 	original.step(60);
 	std::vector<char> file = save(original.world);
 	ASSERT_TRUE(original.world.getConstraint(4)->isEnabled()) << "F must break after the save";
+	ASSERT_TRUE(original.world.getConstraint(7)->isEnabled()) << "I must break after the save";
 	std::vector<std::vector<btScalar>> expected;
 	expected.push_back(snapshot(original.world));
 	for (int i = 0; i < 240; i++)
@@ -350,10 +398,17 @@ TEST_F(SerializeRoundTrip, LoadedWorldContinuesBitIdentical)
 		std::printf("elastic-plastic2 %d: %.4f rad, %.4f J plastic, %.4f J elastic, enabled %d\n", i, double(e->getCurrentPlasticRotation()),
 					double(e->getAbsorbedEnergy()), double(e->getElasticEnergy()), int(e->isEnabled()));
 	}
+	for (int i = 7; i < 9; i++)
+	{
+		bt6DofElasticPlasticConstraint* e = dynamic_cast<bt6DofElasticPlasticConstraint*>(original.world.getConstraint(i));
+		std::printf("elastic-plastic %d: %.4f rad, %.4f J plastic, %.4f J elastic, enabled %d\n", i, double(e->getCurrentPlasticRotation()),
+					double(e->getAbsorbedEnergy()), double(e->getElasticEnergy()), int(e->isEnabled()));
+	}
 	ASSERT_FALSE(hb->isEnabled()) << "B must break after the save";
 	ASSERT_GT(hc->getAbsorbedEnergy(), btScalar(0)) << "C must yield";
 	ASSERT_GT(hd->getAbsorbedEnergy(), btScalar(0)) << "D must yield";
 	ASSERT_FALSE(original.world.getConstraint(4)->isEnabled()) << "F must break after the save";
+	ASSERT_FALSE(original.world.getConstraint(7)->isEnabled()) << "I must break after the save";
 
 	World loaded;
 	load(file, loaded);
