@@ -450,7 +450,8 @@ TEST(SerializeFormat, UncappedHingeWritesTheUpstreamStructure)
 }
 
 // tests/serialize/data/upstream-326.bullet was written by unpatched Bullet (make_old_file.cpp, pybullet 3.2.7 src/,
-// single precision, 64-bit): it has no plastic structures in its DNA and loads with every value make_old_file set.
+// single precision, 64-bit): it has no plastic structures in its DNA and loads with every value make_old_file set
+// (compared as the floats the file holds, so that a double-precision build checks the same).
 TEST_F(SerializeRoundTrip, OldFileLoads)
 {
 	bParse::btBulletFile file(BP_SERIALIZE_DATA_DIR "/upstream-326.bullet");
@@ -464,14 +465,14 @@ TEST_F(SerializeRoundTrip, OldFileLoads)
 
 	ASSERT_EQ(5, w.world.getNumCollisionObjects());
 	ASSERT_EQ(4, w.world.getNumConstraints());
-	EXPECT_EQ(btScalar(-9.81), w.world.getGravity().y());
+	EXPECT_EQ(-9.81f, float(w.world.getGravity().y()));
 	EXPECT_EQ(btScalar(0.5), btRigidBody::upcast(w.world.getCollisionObjectArray()[1])->getInvMass());
 
 	btHingeConstraint* hinge = dynamic_cast<btHingeConstraint*>(w.world.getConstraint(0));
 	ASSERT_NE(nullptr, hinge);
 	EXPECT_EQ(nullptr, dynamic_cast<btPlasticHingeConstraint*>(hinge));
 	EXPECT_EQ(HINGE_CONSTRAINT_TYPE, hinge->getConstraintType());
-	EXPECT_FLOAT_EQ(-0.5f, float(hinge->getLowerLimit()));
+	EXPECT_FLOAT_EQ(-0.5f, float(hinge->getLowerLimit()));  // the limit is kept as centre and half range
 	EXPECT_FLOAT_EQ(0.7f, float(hinge->getUpperLimit()));
 	EXPECT_FLOAT_EQ(0.8f, float(hinge->getLimitSoftness()));
 	EXPECT_FLOAT_EQ(0.25f, float(hinge->getLimitBiasFactor()));
@@ -491,16 +492,16 @@ TEST_F(SerializeRoundTrip, OldFileLoads)
 	btVector3 lower, upper;
 	spring2->getLinearLowerLimit(lower);
 	spring2->getLinearUpperLimit(upper);
-	EXPECT_EQ(btScalar(-0.1), lower.y());
-	EXPECT_EQ(btScalar(0.1), upper.y());
+	EXPECT_EQ(-0.1f, float(lower.y()));
+	EXPECT_EQ(0.1f, float(upper.y()));
 	spring2->getAngularLowerLimit(lower);
 	spring2->getAngularUpperLimit(upper);
-	EXPECT_EQ(btScalar(-0.3), lower.z());
-	EXPECT_EQ(btScalar(0.4), upper.z());
+	EXPECT_EQ(-0.3f, float(lower.z()));
+	EXPECT_EQ(0.4f, float(upper.z()));
 	EXPECT_TRUE(spring2->getTranslationalLimitMotor()->m_enableSpring[1]);
 	EXPECT_EQ(btScalar(100), spring2->getTranslationalLimitMotor()->m_springStiffness[1]);
 	EXPECT_EQ(btScalar(0.5), spring2->getTranslationalLimitMotor()->m_springDamping[1]);
-	EXPECT_EQ(btScalar(0.02), spring2->getTranslationalLimitMotor()->m_equilibriumPoint[1]);
+	EXPECT_EQ(0.02f, float(spring2->getTranslationalLimitMotor()->m_equilibriumPoint[1]));
 	EXPECT_EQ(SIMD_INFINITY, spring2->getMaxRowForce(1));
 
 	btHingeConstraint* locked = dynamic_cast<btHingeConstraint*>(w.world.getConstraint(3));
