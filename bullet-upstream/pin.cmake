@@ -18,7 +18,7 @@ set(BULLET_UPSTREAM_TOPDIR "pybullet-3.2.7")
 
 # What is unpacked (paths relative to the top folder). The libraries need the
 # first group (with upstream's .bullet file loader and world importer, which patch
-# 0015 teaches the plastic hinge and which only the tests build); the demo app
+# 0017 teaches the plastic constraints and which only the tests build); the demo app
 # (OpenGL / OSMesa) needs the second (BulletSoftBody
 # because the browser's OpenGLGuiHelper draws soft bodies; three headers that
 # OpenGLExampleBrowser.cpp includes). Both are always unpacked, since patches

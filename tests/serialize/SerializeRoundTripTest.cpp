@@ -1,6 +1,7 @@
-// .bullet files and the plastic hinge (patches 0013-0015): a world saved with btDefaultSerializer in the middle of a
-// yield and loaded with btBulletWorldImporter into a fresh world continues bit for bit like the world that was never
-// saved (motion and booking); a plain hinge keeps its locked-moment cap; a file written by unpatched Bullet loads.
+// .bullet files and the plastic constraints (patches 0013-0017): a world saved with btDefaultSerializer in the middle
+// of a yield and loaded with btBulletWorldImporter into a fresh world continues bit for bit like the world that was
+// never saved (motion and booking) for the plastic hinge and both elastic-plastic 6DOF constraints; a plain hinge keeps
+// its locked-moment cap and a plain Spring2 constraint its row cap; a file written by unpatched Bullet loads.
 #include <gtest/gtest.h>
 
 #include <cstdio>
