@@ -19,9 +19,11 @@ set(BULLET_UPSTREAM_SHA256 "042879db8d101ac7590dee475fc6aded508b85fe1273fdbbfde1
 set(BULLET_UPSTREAM_TOPDIR "pybullet-3.2.7")
 
 # What is unpacked (paths relative to the top folder). The libraries upstream
-# installs need the first group; the demo app (OpenGL / OSMesa) needs the second
-# (three headers that OpenGLExampleBrowser.cpp includes). Both are always unpacked,
-# since patches 0008-0011 change files of the second group; only what a target needs is built.
+# installs need the first group (with upstream's .bullet file loader and world
+# importer, which patch 0017 teaches the plastic constraints and which only the
+# tests build); the demo app (OpenGL / OSMesa) needs the second (three headers that
+# OpenGLExampleBrowser.cpp includes). Both are always unpacked, since patches
+# 0008-0011 change files of the second group; only what a target needs is built.
 set(BULLET_UPSTREAM_LIBRARY_PATHS
 	LICENSE.txt
 	src/LinearMath
@@ -34,7 +36,9 @@ set(BULLET_UPSTREAM_LIBRARY_PATHS
 	src/btBulletDynamicsCommon.h
 	src/btBulletCollisionAll.cpp
 	src/btBulletDynamicsAll.cpp
-	src/btLinearMathAll.cpp)
+	src/btLinearMathAll.cpp
+	Extras/Serialize/BulletFileLoader
+	Extras/Serialize/BulletWorldImporter)
 set(BULLET_UPSTREAM_DEMO_PATHS
 	examples/OpenGLWindow
 	examples/CommonInterfaces

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "JointFactory.h"
 #include "Section.h"
+#include "SubstepPolicy.h"
 #include "btBulletDynamicsCommon.h"
 #include "BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h"
 #include "BulletDynamics/ConstraintSolver/btGeneric6DofSpring2Constraint.h"
@@ -26,40 +28,21 @@ btTransform translation(double x, double y, double z)
 	return t;
 }
 
-// Capacities (N, N m) and elastic stiffnesses (N/m, N m/rad) of a b x h section (h along X) joining two
-// parts whose centres are segment_m apart, in the 6DOF frame used below: frame X = world Y (the bending
-// axis of the impact), frame Y = world -X, frame Z = world Z (the specimen axis).
-struct SectionDofs
+// The toolkit's joint method for a Charpy method (rigid: no joint).
+plastic::JointMethod jointMethod(CharpyMethod method)
 {
-	double maxForce[6];
-	double stiffness[6];
-};
-
-SectionDofs sectionDofs(const CharpyParameters& p, double h, double segment_m)
-{
-	plastic::Material material;
-	material.youngs_modulus_pa = p.youngs_modulus_pa;
-	material.poisson_ratio = kPoisson;
-	material.yield_stress_pa = p.yield_stress_pa;
-	// the toolkit's member axis is the specimen axis (world Z), its width the specimen width (world Y) and its
-	// depth h the impact direction (world X): "about y" is frame X here, "about z" frame Y
-	const plastic::SectionProperties section = plastic::rectangle(p.specimen_width_m, h);
-	const plastic::SectionCapacities capacity = plastic::capacities(section, material);
-	const plastic::SegmentStiffness k = plastic::stiffness(section, material, segment_m);
-	SectionDofs s{};
-	// linear: frame X (world Y) and Y (world X) shear, Z axial
-	s.maxForce[0] = s.maxForce[1] = capacity.shear_n;
-	s.maxForce[2] = capacity.axial_n;
-	s.stiffness[0] = s.stiffness[1] = k.shear_n_m;
-	s.stiffness[2] = k.axial_n_m;
-	// angular: frame X (world Y) bending by the impact, frame Y (world X) bending the other way, Z torsion
-	s.maxForce[3] = capacity.plastic_moment_y_nm;
-	s.maxForce[4] = capacity.plastic_moment_z_nm;
-	s.maxForce[5] = capacity.torque_nm;
-	s.stiffness[3] = k.bending_y_nm_rad;
-	s.stiffness[4] = k.bending_z_nm_rad;
-	s.stiffness[5] = k.torsion_nm_rad;
-	return s;
+	switch (method)
+	{
+		case CharpyMethod::BrittleZeroLimits: return plastic::JointMethod::Brittle;
+		case CharpyMethod::Spring: return plastic::JointMethod::Spring;
+		case CharpyMethod::Spring2: return plastic::JointMethod::Spring2;
+		case CharpyMethod::HingeMotor: return plastic::JointMethod::HingeMotor;
+		case CharpyMethod::ElasticPlastic: return plastic::JointMethod::ElasticPlastic;
+		case CharpyMethod::ElasticPlastic2: return plastic::JointMethod::ElasticPlastic2;
+		case CharpyMethod::RigidBody:
+		case CharpyMethod::PlasticHinge: break;
+	}
+	return plastic::JointMethod::PlasticHinge;
 }
 }  // namespace
 
@@ -75,6 +58,8 @@ struct CharpyScene::Impl
 	btAlignedObjectArray<btMotionState*> motionStates;
 	btHingeConstraint* hammerPivot = nullptr;
 	btVector3 pivot_m;
+	std::vector<plastic::Joint> joints;      // the specimen's joints, made by the toolkit's joint factory
+	std::vector<plastic::JointSpec> specs;   // what each was made from (the per-step caps follow it)
 
 	btRigidBody* addBody(btDiscreteDynamicsWorld* world, btCollisionShape* shape, double mass_kg, const btVector3& inertia,
 						 const btTransform& transform, double friction, double restitution)
@@ -116,8 +101,8 @@ CharpyScene::CharpyScene(const CharpyParameters& parameters)
 		}
 		throw std::invalid_argument(text);
 	}
+	m_substeps = plastic::ContactSubstepPolicy(plastic::ContactSubstepSettings{parameters.contact_substep_s});
 	m_section = computeCharpySection(parameters);
-	m_fullSectionMoment_nm = sectionDofs(parameters, parameters.specimen_width_m, 1.0).maxForce[3];
 	m_impl = std::make_unique<Impl>();
 	try
 	{
@@ -147,6 +132,13 @@ CharpyScene::~CharpyScene() { destroy(); }
 
 void CharpyScene::destroy()
 {
+	for (auto it = m_impl->joints.rbegin(); it != m_impl->joints.rend(); ++it)
+	{
+		m_world->removeConstraint(it->constraint.get());
+	}
+	m_impl->joints.clear();
+	m_joints.clear();
+	m_middleJoint = nullptr;
 	for (int i = m_impl->constraints.size() - 1; i >= 0; i--)
 	{
 		m_world->removeConstraint(m_impl->constraints[i]);
@@ -253,129 +245,45 @@ void CharpyScene::createSpecimen()
 	}
 }
 
-btTypedConstraint* CharpyScene::createJoint(btRigidBody* a, btRigidBody* b, double zInterface_m, bool notched)
-{
-	const CharpyParameters& p = m_parameters;
-	const double width = p.specimen_width_m;
-	const double h = notched ? m_section.ligament_m : width;
-	const double hingeX = notched ? m_section.hinge_offset_m : width / 2.0;
-	const double segment = p.specimen_length_m / p.parts;
-	const btVector3 pivot(btScalar(hingeX), btScalar(p.specimen_bottom_y_m + width / 2.0), btScalar(zInterface_m));
-	const btVector3 pivotInA = a->getCenterOfMassTransform().inverse() * pivot;
-	const btVector3 pivotInB = b->getCenterOfMassTransform().inverse() * pivot;
-	const SectionDofs dofs = sectionDofs(p, h, segment);
-	const double plasticMoment = dofs.maxForce[3];
-
-	// 6DOF frames: frame X = world Y, so the impact bends the joint about the frame's X axis (range +/-pi)
-	btTransform frameA, frameB;
-	frameA.setIdentity();
-	frameA.getBasis().setEulerZYX(0, 0, btScalar(M_PI / 2.0));
-	frameB = frameA;
-	frameA.setOrigin(pivotInA);
-	frameB.setOrigin(pivotInB);
-
-	switch (p.method)
-	{
-		case CharpyMethod::RigidBody:
-			return nullptr;
-		case CharpyMethod::BrittleZeroLimits:
-		{
-			auto* c = new btGeneric6DofConstraint(*a, *b, frameA, frameB, true);
-			c->setLinearLowerLimit(btVector3(0, 0, 0));
-			c->setLinearUpperLimit(btVector3(0, 0, 0));
-			c->setAngularLowerLimit(btVector3(0, 0, 0));
-			c->setAngularUpperLimit(btVector3(0, 0, 0));
-			return c;  // breaking threshold set per internal step: brittle_breaking_force_n * h
-		}
-		case CharpyMethod::Spring:
-		{
-			auto* c = new btGeneric6DofSpringConstraint(*a, *b, frameA, frameB, true);
-			c->setLinearLowerLimit(btVector3(0, 0, 0));
-			c->setLinearUpperLimit(btVector3(0, 0, 0));
-			c->setAngularLowerLimit(btVector3(1, 1, 1));  // free: the springs act
-			c->setAngularUpperLimit(btVector3(-1, -1, -1));
-			for (int i = 3; i < 6; i++)
-			{
-				c->enableSpring(i, true);
-				c->setStiffness(i, btScalar(dofs.maxForce[i]));  // thesis 2.5: Mp per rad
-			}
-			c->setEquilibriumPoint();
-			return c;
-		}
-		case CharpyMethod::Spring2:
-		{
-			auto* c = new btGeneric6DofSpring2Constraint(*a, *b, frameA, frameB);
-			c->setLinearLowerLimit(btVector3(0, 0, 0));
-			c->setLinearUpperLimit(btVector3(0, 0, 0));
-			c->setAngularLowerLimit(btVector3(1, 1, 1));
-			c->setAngularUpperLimit(btVector3(-1, -1, -1));
-			for (int i = 3; i < 6; i++)
-			{
-				c->enableSpring(i, true);
-				c->setStiffness(i, btScalar(dofs.maxForce[i]));  // limitIfNeeded = true, as upstream users would
-			}
-			c->setEquilibriumPoint();
-			return c;
-		}
-		case CharpyMethod::HingeMotor:
-		case CharpyMethod::PlasticHinge:
-		{
-			const btVector3 axis(0, 1, 0);
-			const btVector3 axisInA = a->getCenterOfMassTransform().getBasis().transpose() * axis;
-			const btVector3 axisInB = b->getCenterOfMassTransform().getBasis().transpose() * axis;
-			if (p.method == CharpyMethod::HingeMotor)
-			{
-				auto* c = new btHingeConstraint(*a, *b, pivotInA, pivotInB, axisInA, axisInB);
-				c->enableAngularMotor(true, 0, 0);  // max impulse set per internal step: Mp * h
-				return c;
-			}
-			auto* c = new btPlasticHingeConstraint(*a, *b, pivotInA, pivotInB, axisInA, axisInB);
-			c->setPlasticMoment(btScalar(plasticMoment));
-			c->setMaxPlasticRotation(btScalar(p.max_plastic_rotation_rad));
-			return c;
-		}
-		case CharpyMethod::ElasticPlastic:
-		{
-			auto* c = new bt6DofElasticPlasticConstraint(*a, *b, frameA, frameB, true);
-			for (int i = 0; i < 6; i++)
-			{
-				c->setStiffness(i, btScalar(dofs.stiffness[i]));
-				c->setMaxForce(i, btScalar(dofs.maxForce[i]));
-			}
-			c->setMaxPlasticRotation(btScalar(p.max_plastic_rotation_rad));
-			c->setFrequencyRatio(btScalar(p.frequency_ratio));
-			return c;
-		}
-		case CharpyMethod::ElasticPlastic2:
-		{
-			auto* c = new bt6DofElasticPlastic2Constraint(*a, *b, frameA, frameB);
-			for (int i = 0; i < 6; i++)
-			{
-				c->setStiffness(i, btScalar(dofs.stiffness[i]), false);
-				c->setMaxForce(i, btScalar(dofs.maxForce[i]));
-			}
-			c->setMaxPlasticRotation(btScalar(p.max_plastic_rotation_rad));
-			c->setFrequencyRatio(btScalar(p.frequency_ratio));
-			return c;
-		}
-	}
-	return nullptr;
-}
-
 void CharpyScene::createJoints()
 {
+	const CharpyParameters& p = m_parameters;
 	const int n = static_cast<int>(m_parts.size());
+	if (p.method == CharpyMethod::RigidBody)
+	{
+		return;
+	}
+	plastic::Material material;
+	material.youngs_modulus_pa = p.youngs_modulus_pa;
+	material.poisson_ratio = kPoisson;
+	material.yield_stress_pa = p.yield_stress_pa;
+	const double width = p.specimen_width_m;
 	for (int i = 0; i + 1 < n; i++)
 	{
-		double z = -m_parameters.specimen_length_m / 2.0 + (i + 1) * m_parameters.specimen_length_m / n;
-		bool notched = (i + 1) * 2 == n;
-		btTypedConstraint* joint = createJoint(m_parts[i], m_parts[i + 1], z, notched);
-		if (!joint)
-		{
-			continue;
-		}
+		const double z = -p.specimen_length_m / 2.0 + (i + 1) * p.specimen_length_m / n;
+		const bool notched = (i + 1) * 2 == n;
+		// the section left at the interface: the ligament at the notch, the whole width elsewhere; the hinge at
+		// its centre. The toolkit's member axis is the specimen axis (world Z), the section's width is the
+		// specimen width (world Y) and its depth h the impact direction (world X): the impact bends the joint
+		// about world Y (its bending axis 1), the other bending axis is world -X.
+		const double h = notched ? m_section.ligament_m : width;
+		plastic::JointSpec spec;
+		spec.method = jointMethod(p.method);
+		spec.pivot_m = btVector3(btScalar(notched ? m_section.hinge_offset_m : width / 2.0),
+								 btScalar(p.specimen_bottom_y_m + width / 2.0), btScalar(z));
+		spec.basis.setValue(0, -1, 0,  // columns: world Y, world -X, world Z
+							1, 0, 0,   //
+							0, 0, 1);
+		spec.section = plastic::rectangle(width, h);
+		spec.material = material;
+		spec.segment_length_m = p.specimen_length_m / p.parts;
+		spec.max_plastic_rotation_rad = p.max_plastic_rotation_rad;
+		spec.frequency_ratio = p.frequency_ratio;
+		spec.breaking_force_n = p.brittle_breaking_force_n;
+		m_impl->joints.push_back(plastic::makeJoint(spec, *m_parts[i], *m_parts[i + 1]));
+		m_impl->specs.push_back(spec);
+		btTypedConstraint* joint = m_impl->joints.back().constraint.get();
 		m_world->addConstraint(joint, true);
-		m_impl->constraints.push_back(joint);
 		m_joints.push_back(joint);
 		if (notched)
 		{
@@ -475,41 +383,13 @@ void CharpyScene::createHammer()
 
 bool CharpyScene::nearContact(double horizon_s) const
 {
-	auto reach = [horizon_s](const btRigidBody* body, btVector3& lo, btVector3& hi) {
-		body->getAabb(lo, hi);
-		btScalar radius = (hi - lo).length() / 2;
-		btScalar travel = btScalar((body->getLinearVelocity().length() + body->getAngularVelocity().length() * radius) * horizon_s);
-		btVector3 grow(travel + btScalar(0.001), travel + btScalar(0.001), travel + btScalar(0.001));
-		lo -= grow;
-		hi += grow;
-	};
-	auto overlap = [](const btVector3& aLo, const btVector3& aHi, const btVector3& bLo, const btVector3& bHi) {
-		return aLo.x() <= bHi.x() && bLo.x() <= aHi.x() && aLo.y() <= bHi.y() && bLo.y() <= aHi.y() && aLo.z() <= bHi.z() && bLo.z() <= aHi.z();
-	};
-	btVector3 hLo, hHi;
+	std::vector<const btCollisionObject*> movers(m_parts.begin(), m_parts.end());
+	std::vector<const btCollisionObject*> others(m_anvils.begin(), m_anvils.end());
 	if (m_hammer)
 	{
-		reach(m_hammer, hLo, hHi);
+		others.push_back(m_hammer);
 	}
-	for (const btRigidBody* part : m_parts)
-	{
-		btVector3 pLo, pHi;
-		reach(part, pLo, pHi);
-		if (m_hammer && overlap(pLo, pHi, hLo, hHi))
-		{
-			return true;
-		}
-		for (const btRigidBody* anvil : m_anvils)
-		{
-			btVector3 aLo, aHi;
-			anvil->getAabb(aLo, aHi);
-			if (overlap(pLo, pHi, aLo, aHi))
-			{
-				return true;
-			}
-		}
-	}
-	return false;
+	return plastic::mayTouchWithin(movers, others, horizon_s);
 }
 
 void CharpyScene::step()
@@ -520,52 +400,19 @@ void CharpyScene::step()
 	{
 		frame = p.auto_dt_coarse_s;
 	}
-	// Only the part of the frame in or near contact is substepped: the rest of the frame is cut in halves until a
-	// piece reaches no contact within its own length; where even a contact substep reaches one, the step is a
-	// contact substep. The contact test is re-made after every internal step.
-	double remaining = frame;
-	while (remaining > 1e-12 * frame)
-	{
-		double piece = remaining;
-		if (p.contact_substep_s > 0)
-		{
-			while (piece > p.contact_substep_s && nearContact(piece))
-			{
-				piece /= 2;
-			}
-			if (piece < p.contact_substep_s)
-			{
-				piece = std::min(remaining, p.contact_substep_s);
-			}
-		}
-		internalStep(piece);
-		remaining -= piece;
-	}
+	m_substeps.advance(
+		frame, [this](double horizon_s) { return nearContact(horizon_s); }, [this](double h_s) { internalStep(h_s); });
 	m_lastFrameStep_s = frame;
 }
 
 void CharpyScene::internalStep(double h_s)
 {
-	// per-step work only the upstream methods need: their caps are impulses, so they follow the internal step
+	// the upstream methods' caps are impulses: they follow the internal step
 	const btScalar h = btScalar(h_s);
-	if (m_parameters.method == CharpyMethod::HingeMotor)
+	for (size_t i = 0; i < m_impl->joints.size(); i++)
 	{
-		for (btTypedConstraint* joint : m_joints)
-		{
-			auto* hinge = static_cast<btHingeConstraint*>(joint);
-			double moment = joint == m_middleJoint ? m_section.plastic_moment_nm : m_fullSectionMoment_nm;
-			hinge->setMaxMotorImpulse(btScalar(moment) * h);
-		}
+		plastic::updateJointForStep(*m_impl->joints[i].constraint, m_impl->specs[i], h_s);
 	}
-	else if (m_parameters.method == CharpyMethod::BrittleZeroLimits)
-	{
-		for (btTypedConstraint* joint : m_joints)
-		{
-			joint->setBreakingImpulseThreshold(btScalar(m_parameters.brittle_breaking_force_n) * h);
-		}
-	}
-	// GJK's simplex tolerances are absolute, tuned for metre-sized objects (a 1 cm equal-vertex distance, a 1e-4 m^3
-	// degenerate tetrahedron): for the millimetre edges they stop GJK early with distances off by up to millimetres.
 	// Scaled to the specimen for this scene's steps, as its collision margins are (patch 0018); a process-wide
 	// setting, so it is put back after every step.
 	const btScalar gjkLengthScale = gVoronoiSimplexLengthScale;
@@ -643,45 +490,9 @@ CharpyEnergies CharpyScene::energies() const
 		btVector3 inertia = body->getLocalInertia();
 		e.kinetic_j += 0.5 * m * v.length2() + 0.5 * (inertia.x() * localW.x() * localW.x() + inertia.y() * localW.y() * localW.y() + inertia.z() * localW.z() * localW.z());
 	}
-	for (btTypedConstraint* joint : m_joints)
+	for (const plastic::Joint& joint : m_impl->joints)
 	{
-		if (!joint->isEnabled())
-		{
-			continue;
-		}
-		switch (m_parameters.method)
-		{
-			case CharpyMethod::Spring:
-			{
-				auto* c = static_cast<btGeneric6DofSpringConstraint*>(joint);
-				c->calculateTransforms();
-				for (int i = 0; i < 3; i++)
-				{
-					double angle = c->getAngle(i) - c->getEquilibriumPoint(i + 3);
-					e.elastic_j += 0.5 * c->getStiffness(i + 3) * angle * angle;
-				}
-				break;
-			}
-			case CharpyMethod::Spring2:
-			{
-				auto* c = static_cast<btGeneric6DofSpring2Constraint*>(joint);
-				c->calculateTransforms();
-				for (int i = 0; i < 3; i++)
-				{
-					double angle = c->getAngle(i) - c->getRotationalLimitMotor(i)->m_equilibriumPoint;
-					e.elastic_j += 0.5 * c->getRotationalLimitMotor(i)->m_springStiffness * angle * angle;
-				}
-				break;
-			}
-			case CharpyMethod::ElasticPlastic:
-				e.elastic_j += static_cast<bt6DofElasticPlasticConstraint*>(joint)->getElasticEnergy();
-				break;
-			case CharpyMethod::ElasticPlastic2:
-				e.elastic_j += static_cast<bt6DofElasticPlastic2Constraint*>(joint)->getElasticEnergy();
-				break;
-			default:
-				break;
-		}
+		e.elastic_j += joint.elasticEnergy_j();
 	}
 	e.total_j = e.potential_j + e.kinetic_j + e.elastic_j;
 	return e;
@@ -690,22 +501,9 @@ CharpyEnergies CharpyScene::energies() const
 double CharpyScene::plasticWork_j() const
 {
 	double work = 0;
-	for (btTypedConstraint* joint : m_joints)
+	for (const plastic::Joint& joint : m_impl->joints)
 	{
-		switch (m_parameters.method)
-		{
-			case CharpyMethod::PlasticHinge:
-				work += static_cast<btPlasticHingeConstraint*>(joint)->getAbsorbedEnergy();
-				break;
-			case CharpyMethod::ElasticPlastic:
-				work += static_cast<bt6DofElasticPlasticConstraint*>(joint)->getAbsorbedEnergy();
-				break;
-			case CharpyMethod::ElasticPlastic2:
-				work += static_cast<bt6DofElasticPlastic2Constraint*>(joint)->getAbsorbedEnergy();
-				break;
-			default:
-				break;
-		}
+		work += joint.plasticWork_j();
 	}
 	return m_parameters.method == CharpyMethod::HingeMotor ? m_motorWork_j : work;
 }
@@ -713,22 +511,9 @@ double CharpyScene::plasticWork_j() const
 double CharpyScene::plasticRotation_rad() const
 {
 	double rotation = 0;
-	for (btTypedConstraint* joint : m_joints)
+	for (const plastic::Joint& joint : m_impl->joints)
 	{
-		switch (m_parameters.method)
-		{
-			case CharpyMethod::PlasticHinge:
-				rotation += static_cast<btPlasticHingeConstraint*>(joint)->getCurrentPlasticRotation();
-				break;
-			case CharpyMethod::ElasticPlastic:
-				rotation += static_cast<bt6DofElasticPlasticConstraint*>(joint)->getCurrentPlasticRotation();
-				break;
-			case CharpyMethod::ElasticPlastic2:
-				rotation += static_cast<bt6DofElasticPlastic2Constraint*>(joint)->getCurrentPlasticRotation();
-				break;
-			default:
-				break;
-		}
+		rotation += joint.plasticRotation_rad();
 	}
 	return m_parameters.method == CharpyMethod::HingeMotor ? m_motorRotation_rad : rotation;
 }

@@ -8,6 +8,7 @@
 
 #include "CharpyParameters.h"
 #include "CharpySection.h"
+#include "SubstepPolicy.h"
 
 class btCollisionShape;
 class btDiscreteDynamicsWorld;
@@ -72,19 +73,18 @@ private:
 	void createSpecimen();
 	void createJoints();
 	void createHammer();
-	btTypedConstraint* createJoint(btRigidBody* a, btRigidBody* b, double zInterface_m, bool notched);
 	bool nearContact(double horizon_s) const;
 	void internalStep(double h_s);
 	void trackAfterStep(double h_s);
 
 	CharpyParameters m_parameters;
+	plastic::ContactSubstepPolicy m_substeps{plastic::ContactSubstepSettings{0}};  // the frame's internal steps
 	CharpySection m_section;
-	double m_fullSectionMoment_nm = 0;  // plastic moment of the unnotched section (joints away from the notch)
 	std::unique_ptr<Impl> m_impl;  // Bullet's world objects, shapes and bodies
 	std::unique_ptr<btDiscreteDynamicsWorld> m_world;
 	std::vector<btRigidBody*> m_parts;
 	std::vector<btRigidBody*> m_anvils;
-	std::vector<btTypedConstraint*> m_joints;
+	std::vector<btTypedConstraint*> m_joints;  // views of the toolkit joints m_impl owns
 	btRigidBody* m_hammer = nullptr;
 	btTypedConstraint* m_middleJoint = nullptr;
 

@@ -27,7 +27,27 @@ void configureElasticPlastic(Constraint& c, const JointSpec& spec, Stiffness set
 		c.setMaxForce(i, btScalar(maxForce[i]));
 	}
 	c.setMaxPlasticRotation(btScalar(spec.max_plastic_rotation_rad));
+	c.setFrequencyRatio(btScalar(spec.frequency_ratio));
 	c.resetPlasticState();
+}
+
+// the upstream spring methods (thesis 2.5): linear DOFs locked, angular DOFs free with springs whose stiffness is the
+// DOF's capacity per radian, at rest where they are made
+template <class Constraint, class Stiffness>
+void configureSprings(Constraint& c, const JointSpec& spec, Stiffness setStiffness)
+{
+	const SectionCapacities cap = capacities(spec.section, spec.material);
+	const double moment[3] = {cap.plastic_moment_y_nm, cap.plastic_moment_z_nm, cap.torque_nm};
+	c.setLinearLowerLimit(btVector3(0, 0, 0));
+	c.setLinearUpperLimit(btVector3(0, 0, 0));
+	c.setAngularLowerLimit(btVector3(1, 1, 1));  // free: the springs act
+	c.setAngularUpperLimit(btVector3(-1, -1, -1));
+	for (int i = 3; i < 6; i++)
+	{
+		c.enableSpring(i, true);
+		setStiffness(c, i, moment[i - 3]);
+	}
+	c.setEquilibriumPoint();
 }
 }  // namespace
 
@@ -35,6 +55,9 @@ const char* jointMethodName(JointMethod method)
 {
 	switch (method)
 	{
+		case JointMethod::Brittle: return "brittle";
+		case JointMethod::Spring: return "spring";
+		case JointMethod::Spring2: return "spring2";
 		case JointMethod::HingeMotor: return "hinge-motor";
 		case JointMethod::PlasticHinge: return "plastic-hinge";
 		case JointMethod::ElasticPlastic: return "elastic-plastic";
@@ -53,6 +76,14 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 	{
 		throw std::invalid_argument("max plastic rotation: " + std::to_string(spec.max_plastic_rotation_rad) + " is not in (0, inf) rad");
 	}
+	if (!(spec.frequency_ratio >= 1))
+	{
+		throw std::invalid_argument("frequency ratio: " + std::to_string(spec.frequency_ratio) + " is not in [1, inf) steps per period");
+	}
+	if (spec.method == JointMethod::Brittle && !(spec.breaking_force_n > 0))
+	{
+		throw std::invalid_argument("breaking force: " + std::to_string(spec.breaking_force_n) + " is not in (0, inf) N");
+	}
 	// a hinge's axis is the frame's Z: turn the basis so that bending axis 1 becomes Z
 	btMatrix3x3 hingeBasis;
 	hingeBasis.setValue(spec.basis[0][1], spec.basis[0][2], spec.basis[0][0],  //
@@ -63,12 +94,37 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 	const SectionCapacities cap = capacities(spec.section, spec.material);
 	switch (spec.method)
 	{
+		case JointMethod::Brittle:
+		{
+			auto c = std::make_unique<btGeneric6DofConstraint>(a, b, frameIn(a, spec), frameIn(b, spec), true);
+			c->setLinearLowerLimit(btVector3(0, 0, 0));
+			c->setLinearUpperLimit(btVector3(0, 0, 0));
+			c->setAngularLowerLimit(btVector3(0, 0, 0));
+			c->setAngularUpperLimit(btVector3(0, 0, 0));
+			configureJoint(*c, spec.solver, true);
+			return Joint{std::move(c), nullptr, spec.method};
+		}
+		case JointMethod::Spring:
+		{
+			auto c = std::make_unique<btGeneric6DofSpringConstraint>(a, b, frameIn(a, spec), frameIn(b, spec), true);
+			configureSprings(*c, spec, [](btGeneric6DofSpringConstraint& j, int i, double k) { j.setStiffness(i, btScalar(k)); });
+			configureJoint(*c, spec.solver, false);
+			return Joint{std::move(c), nullptr, spec.method};
+		}
+		case JointMethod::Spring2:
+		{
+			auto c = std::make_unique<btGeneric6DofSpring2Constraint>(a, b, frameIn(a, spec), frameIn(b, spec));
+			// limitIfNeeded = true, as upstream users get it
+			configureSprings(*c, spec, [](btGeneric6DofSpring2Constraint& j, int i, double k) { j.setStiffness(i, btScalar(k)); });
+			configureJoint(*c, spec.solver, false);
+			return Joint{std::move(c), nullptr, spec.method};
+		}
 		case JointMethod::HingeMotor:
 		{
 			auto h = std::make_unique<btHingeConstraint>(a, b, frameIn(a, hingeSpec), frameIn(b, hingeSpec));
 			h->enableAngularMotor(true, 0, 0);
 			configureJoint(*h, spec.solver, false);  // a motor's row has a velocity target
-			return Joint{std::move(h), nullptr};
+			return Joint{std::move(h), nullptr, spec.method};
 		}
 		case JointMethod::PlasticHinge:
 		{
@@ -77,7 +133,7 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 			h->setMaxPlasticRotation(btScalar(spec.max_plastic_rotation_rad));
 			configureJoint(*h, spec.solver, true);  // its rows hold position errors alone
 			const btPlasticConstraintState* state = &h->getPlasticState();
-			return Joint{std::move(h), state};
+			return Joint{std::move(h), state, spec.method};
 		}
 		case JointMethod::ElasticPlastic:
 		{
@@ -85,7 +141,7 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 			configureElasticPlastic(*c, spec, [](bt6DofElasticPlasticConstraint& j, int i, double k) { j.setStiffness(i, btScalar(k)); });
 			configureJoint(*c, spec.solver, false);  // springs
 			const btPlasticConstraintState* state = &c->getPlasticState();
-			return Joint{std::move(c), state};
+			return Joint{std::move(c), state, spec.method};
 		}
 		case JointMethod::ElasticPlastic2:
 		{
@@ -93,10 +149,10 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 			configureElasticPlastic(*c, spec, [](bt6DofElasticPlastic2Constraint& j, int i, double k) { j.setStiffness(i, btScalar(k), false); });
 			configureJoint(*c, spec.solver, false);  // springs
 			const btPlasticConstraintState* state = &c->getPlasticState();
-			return Joint{std::move(c), state};
+			return Joint{std::move(c), state, spec.method};
 		}
 	}
-	throw std::invalid_argument("method: not one of hinge-motor, plastic-hinge, elastic-plastic, elastic-plastic2");
+	throw std::invalid_argument("method: not one of brittle, spring, spring2, hinge-motor, plastic-hinge, elastic-plastic, elastic-plastic2");
 }
 
 void updateJointForStep(btTypedConstraint& joint, const JointSpec& spec, double step_s)
@@ -105,6 +161,44 @@ void updateJointForStep(btTypedConstraint& joint, const JointSpec& spec, double 
 	{
 		static_cast<btHingeConstraint&>(joint).setMaxMotorImpulse(btScalar(capacities(spec.section, spec.material).plastic_moment_y_nm * step_s));
 	}
+	else if (spec.method == JointMethod::Brittle)
+	{
+		joint.setBreakingImpulseThreshold(btScalar(spec.breaking_force_n * step_s));
+	}
+}
+
+double Joint::elasticEnergy_j() const
+{
+	if (!constraint || !constraint->isEnabled())
+	{
+		return 0.0;  // a broken joint holds no elastic energy
+	}
+	if (plasticState)
+	{
+		return plasticState->getElasticEnergy();
+	}
+	double energy = 0;
+	if (method == JointMethod::Spring)
+	{
+		auto* c = static_cast<btGeneric6DofSpringConstraint*>(constraint.get());
+		c->calculateTransforms();
+		for (int i = 0; i < 3; i++)
+		{
+			const double angle = c->getAngle(i) - c->getEquilibriumPoint(i + 3);
+			energy += 0.5 * c->getStiffness(i + 3) * angle * angle;
+		}
+	}
+	else if (method == JointMethod::Spring2)
+	{
+		auto* c = static_cast<btGeneric6DofSpring2Constraint*>(constraint.get());
+		c->calculateTransforms();
+		for (int i = 0; i < 3; i++)
+		{
+			const double angle = c->getAngle(i) - c->getRotationalLimitMotor(i)->m_equilibriumPoint;
+			energy += 0.5 * c->getRotationalLimitMotor(i)->m_springStiffness * angle * angle;
+		}
+	}
+	return energy;
 }
 
 }  // namespace plastic

@@ -15,13 +15,16 @@ namespace plastic
 {
 enum class JointMethod
 {
+	Brittle,          // upstream btGeneric6DofConstraint locked in every DOF, breaking at breaking_force_n (thesis 2.3)
+	Spring,           // upstream btGeneric6DofSpringConstraint: linear DOFs locked, bending and torsion springs of Mp per rad
+	Spring2,          // the same on upstream btGeneric6DofSpring2Constraint (stiffness limited as upstream users get it)
 	HingeMotor,       // upstream btHingeConstraint, a motor at target 0 whose impulse is Mp * dt (stand-in)
 	PlasticHinge,     // btPlasticHingeConstraint at Mp about the main bending axis
 	ElasticPlastic,   // bt6DofElasticPlasticConstraint: every DOF at its capacity, rigid-plastic when too stiff
 	ElasticPlastic2,  // bt6DofElasticPlastic2Constraint, the same on Spring2
 };
 
-// "hinge-motor", "plastic-hinge", "elastic-plastic", "elastic-plastic2"
+// "brittle", "spring", "spring2", "hinge-motor", "plastic-hinge", "elastic-plastic", "elastic-plastic2"
 const char* jointMethodName(JointMethod method);
 
 struct JointSpec
@@ -33,6 +36,8 @@ struct JointSpec
 	Material material;
 	double segment_length_m = 1.0;         // centre-to-centre of the bodies it joins: the elastic stiffness' length
 	double max_plastic_rotation_rad = 1e9; // accumulated plastic rotation that breaks it
+	double frequency_ratio = 25.0;         // elastic-plastic: spring steps per natural period below which a DOF is rigid-plastic
+	double breaking_force_n = 0;           // brittle: the force (N) at which it breaks (impulse threshold = force x step)
 	JointSolverSettings solver;            // what the joint asks of the solver (default: warm started rows)
 };
 
@@ -43,14 +48,16 @@ struct Joint
 {
 	std::unique_ptr<btTypedConstraint> constraint;
 	const btPlasticConstraintState* plasticState = nullptr;
+	JointMethod method = JointMethod::PlasticHinge;
 
 	double plasticWork_j() const { return plasticState ? plasticState->getAbsorbedEnergy() : 0.0; }
-	double elasticEnergy_j() const { return plasticState ? plasticState->getElasticEnergy() : 0.0; }
+	// the plastic classes' elastic energy, or the springs' 1/2 k x^2 of the upstream spring methods; 0 once broken
+	double elasticEnergy_j() const;
 	double plasticRotation_rad() const { return plasticState ? plasticState->getCurrentPlasticRotation() : 0.0; }
 };
 
-// The joint between a and b (b may be a static body). The hinge-motor stand-in's impulse follows the step:
-// call updateJointForStep before each step for it; the other methods need nothing.
+// The joint between a and b (b may be a static body). The hinge-motor stand-in's impulse and the brittle joint's
+// breaking impulse follow the step: call updateJointForStep before each step; the other methods need nothing.
 Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b);
 void updateJointForStep(btTypedConstraint& joint, const JointSpec& spec, double step_s);
 }  // namespace plastic

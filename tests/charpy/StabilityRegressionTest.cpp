@@ -47,8 +47,9 @@ const Cell kCells[] = {
 	{"iterations1_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.solver_iterations = 1; }, CharpyVerdict::Stable},
 	{"stiffE_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.youngs_modulus_pa = 2000e9; }, CharpyVerdict::Stable},
 	// upstream, as it is: the spring explodes (thesis fig. 3.5), a rigid specimen tunnels at 1/60 s
-	// (the energy rises to 23 x E0; the fastest part reaches 99.8 m/s, just under the 100 m/s blow-up threshold)
-	{"fy800_spring_upstream", CharpyMethod::Spring, [](CharpyParameters& p) { p.yield_stress_pa = 800e6; }, CharpyVerdict::EnergyGain},
+	// (the energy rises to about 23 x E0 and the fastest part reaches 100-114 m/s: at the 100 m/s blow-up threshold,
+	// so float noise in the joint frames decides between the two; 114 m/s since the joints come from the toolkit)
+	{"fy800_spring_upstream", CharpyMethod::Spring, [](CharpyParameters& p) { p.yield_stress_pa = 800e6; }, CharpyVerdict::BlowUp},
 	{"default_spring2_upstream", CharpyMethod::Spring2, [](CharpyParameters&) {}, CharpyVerdict::EnergyGain},
 	{"dt60Hz_nosub_rigid_upstream", CharpyMethod::RigidBody, [](CharpyParameters& p) { p.dt_s = 1.0 / 60; p.contact_substep_s = 0; }, CharpyVerdict::Tunnelling},
 };

@@ -1,0 +1,45 @@
+// Contact substeps: how a scene splits a frame into internal steps so that only the part of the frame in or near
+// contact is cut into short steps. The scene owns one; the world is stepped through it.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+class btCollisionObject;
+
+namespace plastic
+{
+// Whether some body of `movers` can touch some object of `others` within horizon_s: each mover's bounding box is
+// grown by how far its fastest point can travel in that time (linear speed + angular speed x half its box
+// diagonal, plus clearance_m), and so is every moving object of `others`; static objects keep their boxes.
+bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
+					double horizon_s, double clearance_m = 0.001);
+
+struct ContactSubstepSettings
+{
+	double contact_substep_s = 1e-5;  // internal step while in or near contact; 0 = no substeps
+};
+
+// Every violated setting as "name: value is not in range" text; empty when valid.
+std::vector<std::string> validate(const ContactSubstepSettings& settings);
+
+class ContactSubstepPolicy
+{
+public:
+	using NearContact = std::function<bool(double horizon_s)>;  // can a contact happen within horizon_s?
+	using Step = std::function<void(double step_s)>;           // one internal step of the world
+
+	explicit ContactSubstepPolicy(const ContactSubstepSettings& settings);  // throws std::invalid_argument
+
+	// Advances one frame: the part of the frame that reaches no contact within its own length is one step (or a
+	// few halves), the part in or near contact is cut into steps of at most contact_substep_s. The contact test
+	// is made again after every internal step. Returns the number of internal steps.
+	int advance(double frame_s, const NearContact& nearContact, const Step& step) const;
+
+	const ContactSubstepSettings& settings() const { return m_settings; }
+
+private:
+	ContactSubstepSettings m_settings;
+};
+}  // namespace plastic
