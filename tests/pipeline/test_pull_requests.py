@@ -30,10 +30,11 @@ def run(cmd, **kw):
 
 
 def subject(patch):
-    for line in open(os.path.join(PROJECT, "patches", patch), encoding="utf-8"):
-        if line.startswith("Subject:"):
-            return re.sub(r"^Subject:\s*(\[PATCH[^\]]*\]\s*)?", "", line).strip()
-    raise AssertionError("%s has no Subject:" % patch)
+    """the Subject: of a patch header, unfolded (git am joins continuation lines with a space)"""
+    text = open(os.path.join(PROJECT, "patches", patch), encoding="utf-8").read()
+    m = re.search(r"^Subject:\s*(?:\[PATCH[^\]]*\]\s*)?(.*(?:\n[ \t].*)*)", text, re.M)
+    assert m, "%s has no Subject:" % patch
+    return " ".join(part.strip() for part in m.group(1).split("\n"))
 
 
 def series(name):
