@@ -63,9 +63,17 @@ CantileverResult runCantilever(const CantileverParameters& p)
 	{ return angles[j + 1].angle_rad() - angles[j].angle_rad(); };
 	r.stop_rotation_rad = std::numeric_limits<double>::quiet_NaN();
 	double maxKinetic = 0;
+	std::vector<double> atThird;  // the rotations a third into the run: what they change by after it is creep
+	auto allRotations = [&]
+	{
+		std::vector<double> x;
+		for (size_t j = 0; j < beam.joints().size(); j++) x.push_back(jointRotation(j));
+		return x;
+	};
 	while (rig.time_s() < p.duration_s - 1e-12)
 	{
 		rig.step();
+		if (atThird.empty() && rig.time_s() >= p.duration_s / 3 - 1e-12) atThird = allRotations();
 		const double root = -jointRotation(0);  // the tip going down is clockwise
 		r.max_root_rotation_rad = std::max(r.max_root_rotation_rad, std::fabs(root));
 		for (size_t j = 1; j < beam.joints().size(); j++) r.max_inner_rotation_rad = std::max(r.max_inner_rotation_rad, std::fabs(jointRotation(j)));
@@ -100,11 +108,14 @@ CantileverResult runCantilever(const CantileverParameters& p)
 	r.collapse_ratio = test.collapseFactor();
 	r.holds = test.holds();
 	r.root_rotation_rad = -jointRotation(0);
+	for (size_t j = 0; j < atThird.size(); j++) r.creep_rad = std::max(r.creep_rad, std::fabs(jointRotation(j) - atThird[j]));
 	r.load_work_j = load.work_j();
 	r.kinetic_j = ledger.measure().kinetic_j;
 	for (size_t j = 0; j < beam.joints().size(); j++) r.geometric_plastic_work_j += mp * std::fabs(jointRotation(j));
 	r.booked_plastic_work_j = beam.plasticWork_j();
 	r.energy_balance_error_pct = r.load_work_j > 0 ? 100.0 * (r.load_work_j - r.kinetic_j - r.geometric_plastic_work_j) / r.load_work_j : 0.0;
+	r.solver_fallbacks = rig.solverFallbacks();
+	r.solver_retries = rig.solverRetries();
 	r.steps = rig.steps();
 	r.simulated_s = rig.time_s();
 	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

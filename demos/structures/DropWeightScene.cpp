@@ -153,6 +153,8 @@ DropWeightResult runDropWeight(const DropWeightParameters& p)
 	r.midspan_error_pct = 100 * (r.midspan_rotation_rad - a.midspan_rotation_rad) / a.midspan_rotation_rad;
 	r.plastic_work_error_pct = 100 * (r.geometric_plastic_work_j - a.kinetic_after_impact_j) / a.kinetic_after_impact_j;
 	r.balance_error_pct = 100 * (r.kinetic_after_impact_j - r.kinetic_end_j - r.geometric_plastic_work_j) / r.kinetic_after_impact_j;
+	r.solver_fallbacks = rig.solverFallbacks();
+	r.solver_retries = rig.solverRetries();
 	r.steps = rig.steps();
 	r.simulated_s = rig.time_s();
 	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

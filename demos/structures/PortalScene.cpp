@@ -79,12 +79,13 @@ PortalResult runPortal(const PortalParameters& p)
 	plastic::EnergyLedger ledger(btVector3(0, 0, 0));
 	for (size_t i = 1; i + 1 < path.size(); i++) ledger.addBody(*path[i]);
 
+	const bool ramp = p.ramp_rate_per_s > 0;
 	rig.beforeEachStep([&](double step_s)
 					   {
-		test.advance(step_s);
+		if (ramp) test.advance(step_s);
 		for (ScaledLoad* load : {&horizontal, &vertical})
 		{
-			load->setFactor(test.factor());
+			load->setFactor(ramp ? test.factor() : p.load_factor);
 			load->apply();
 		}
 		columnLeft.updateForStep(step_s);
@@ -102,6 +103,7 @@ PortalResult runPortal(const PortalParameters& p)
 		for (size_t i = 0; i + 1 < angles.size(); i++) x.push_back(angles[i + 1].angle_rad() - angles[i].angle_rad());
 		return x;
 	};
+	std::vector<double> atThird;  // the rotations a third into the run: what they change by after it is creep
 	while (rig.time_s() < p.duration_s - 1e-12)
 	{
 		rig.step();
@@ -112,10 +114,14 @@ PortalResult runPortal(const PortalParameters& p)
 			r.finite = false;
 			break;
 		}
+		for (double x : now) r.max_rotation_rad = std::max(r.max_rotation_rad, std::fabs(x));
+		if (atThird.empty() && rig.time_s() >= p.duration_s / 3 - 1e-12) atThird = now;
+		if (!ramp) continue;
 		test.update(rig.time_s(), now);
 		if (test.done()) break;
 	}
 	r.rotations_rad = rotations();
+	for (size_t i = 0; i < atThird.size(); i++) r.creep_rad = std::max(r.creep_rad, std::fabs(r.rotations_rad[i] - atThird[i]));
 	r.collapse_factor = test.collapseFactor();
 	r.holds = test.holds();
 	r.mechanism_rotations_rad = test.mechanismRotations(r.rotations_rad);
@@ -126,6 +132,8 @@ PortalResult runPortal(const PortalParameters& p)
 	r.kinetic_j = ledger.measure().kinetic_j;
 	for (const plastic::Joint* j : joints) r.booked_plastic_work_j += j->plasticWork_j();
 	for (double x : r.rotations_rad) r.geometric_plastic_work_j += mp * std::fabs(x);
+	r.solver_fallbacks = rig.solverFallbacks();
+	r.solver_retries = rig.solverRetries();
 	r.steps = rig.steps();
 	r.simulated_s = rig.time_s();
 	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
