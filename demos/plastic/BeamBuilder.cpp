@@ -54,6 +54,7 @@ Beam::Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* su
 			joint.material = spec.material;
 			joint.segment_length_m = m_segmentLength_m;
 			joint.max_plastic_rotation_rad = spec.max_plastic_rotation_rad;
+			joint.solver = spec.solver;
 			m_joints.push_back(makeJoint(joint, *previous, *body));
 			m_specs.push_back(joint);
 			m_world.addConstraint(m_joints.back().constraint.get(), true);

@@ -20,6 +20,7 @@ struct BeamSpec
 	btVector3 bending_axis{0, 0, 1};  // world axis of the main bending (a hinge's axis), across the member
 	JointMethod method = JointMethod::PlasticHinge;
 	double max_plastic_rotation_rad = 1e9;
+	JointSolverSettings solver;  // every joint's solver settings (SolverSettings.h)
 };
 
 class Beam

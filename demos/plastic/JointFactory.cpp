@@ -67,6 +67,7 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 		{
 			auto h = std::make_unique<btHingeConstraint>(a, b, frameIn(a, hingeSpec), frameIn(b, hingeSpec));
 			h->enableAngularMotor(true, 0, 0);
+			configureJoint(*h, spec.solver, false);  // a motor's row has a velocity target
 			return Joint{std::move(h), nullptr};
 		}
 		case JointMethod::PlasticHinge:
@@ -74,6 +75,7 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 			auto h = std::make_unique<btPlasticHingeConstraint>(a, b, frameIn(a, hingeSpec), frameIn(b, hingeSpec));
 			h->setPlasticMoment(btScalar(cap.plastic_moment_y_nm));
 			h->setMaxPlasticRotation(btScalar(spec.max_plastic_rotation_rad));
+			configureJoint(*h, spec.solver, true);  // its rows hold position errors alone
 			const btPlasticConstraintState* state = &h->getPlasticState();
 			return Joint{std::move(h), state};
 		}
@@ -81,6 +83,7 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 		{
 			auto c = std::make_unique<bt6DofElasticPlasticConstraint>(a, b, frameIn(a, spec), frameIn(b, spec), true);
 			configureElasticPlastic(*c, spec, [](bt6DofElasticPlasticConstraint& j, int i, double k) { j.setStiffness(i, btScalar(k)); });
+			configureJoint(*c, spec.solver, false);  // springs
 			const btPlasticConstraintState* state = &c->getPlasticState();
 			return Joint{std::move(c), state};
 		}
@@ -88,6 +91,7 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 		{
 			auto c = std::make_unique<bt6DofElasticPlastic2Constraint>(a, b, frameIn(a, spec), frameIn(b, spec));
 			configureElasticPlastic(*c, spec, [](bt6DofElasticPlastic2Constraint& j, int i, double k) { j.setStiffness(i, btScalar(k), false); });
+			configureJoint(*c, spec.solver, false);  // springs
 			const btPlasticConstraintState* state = &c->getPlasticState();
 			return Joint{std::move(c), state};
 		}

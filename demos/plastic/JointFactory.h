@@ -8,6 +8,7 @@
 #include <string>
 
 #include "Section.h"
+#include "SolverSettings.h"
 #include "btBulletDynamicsCommon.h"
 
 namespace plastic
@@ -32,6 +33,7 @@ struct JointSpec
 	Material material;
 	double segment_length_m = 1.0;         // centre-to-centre of the bodies it joins: the elastic stiffness' length
 	double max_plastic_rotation_rad = 1e9; // accumulated plastic rotation that breaks it
+	JointSolverSettings solver;            // what the joint asks of the solver (default: warm started rows)
 };
 
 // A joint and, for the plastic methods, its plastic bookkeeping (the same interface for all three classes, kept

@@ -81,7 +81,8 @@ Outcome load(JointMethod method, double loadFactor, int iterations, double step_
 
 // With a converged solver (1000 iterations at 1/240 s). At game settings the chain does not hold: at 10 and 50
 // iterations the plastic hinge's cantilever rotates 0.91 and 0.50 rad at 0.95 Mp/L in a second (200: 0.10,
-// 1000: 0.003); finding the means that hold it at 10 iterations is issue 13.
+// 1000: 0.003). The toolkit's default solver (SolverSettings.h, btMLCPSolver + Dantzig) holds it at 10 iterations and
+// 1/240 s: GameSettingsTest.cpp, report/GAME_SETTINGS.md.
 TEST(ToolkitCantilever, CollapsesAtMpOverLWithTheHingeAtTheSupport)
 {
 	for (JointMethod m : {JointMethod::PlasticHinge, JointMethod::ElasticPlastic2, JointMethod::ElasticPlastic, JointMethod::HingeMotor})

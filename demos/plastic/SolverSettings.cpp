@@ -1,0 +1,113 @@
+#include "SolverSettings.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "BulletDynamics/MLCPSolvers/btDantzigSolver.h"
+#include "BulletDynamics/MLCPSolvers/btMLCPSolver.h"
+#include "BulletDynamics/MLCPSolvers/btSolveProjectedGaussSeidel.h"
+
+namespace plastic
+{
+JointSolverSettings upstreamJointSolverSettings()
+{
+	JointSolverSettings s;
+	s.warm_starting_factor = 0;
+	s.override_iterations = 0;
+	s.split_position_correction = false;
+	return s;
+}
+
+WorldSolverSettings upstreamWorldSolverSettings()
+{
+	WorldSolverSettings s;
+	s.solver = SolverKind::SequentialImpulse;
+	s.iterations = 10;
+	s.internal_step_s = 1.0 / 240.0;
+	s.erp = 0.2;
+	s.randomize_order = false;
+	return s;
+}
+
+StructureWorld::StructureWorld(const WorldSolverSettings& settings)
+	: m_settings(settings),
+	  m_configuration(std::make_unique<btDefaultCollisionConfiguration>()),
+	  m_dispatcher(std::make_unique<btCollisionDispatcher>(m_configuration.get())),
+	  m_broadphase(std::make_unique<btDbvtBroadphase>()),
+	  m_solver(settings.solver)
+{
+	if (!(settings.internal_step_s > 0 && settings.internal_step_s <= 0.1))
+	{
+		throw std::invalid_argument("internal step: " + std::to_string(settings.internal_step_s) + " is not in (0, 0.1] s");
+	}
+	m_world = std::make_unique<btDiscreteDynamicsWorld>(m_dispatcher.get(), m_broadphase.get(), m_solver.get(), m_configuration.get());
+	m_world->setGravity(btVector3(0, 0, 0));
+	configureWorld(*m_world, settings);
+}
+
+StructureWorld::~StructureWorld() = default;
+
+int StructureWorld::stepFrame(double frame_s)
+{
+	const int substeps = static_cast<int>(frame_s / m_settings.internal_step_s) + 2;
+	return m_world->stepSimulation(btScalar(frame_s), substeps, btScalar(m_settings.internal_step_s));
+}
+
+OwnedSolver::OwnedSolver(SolverKind kind)
+{
+	switch (kind)
+	{
+		case SolverKind::SequentialImpulse:
+			m_solver = std::make_unique<btSequentialImpulseConstraintSolver>();
+			return;
+		case SolverKind::MlcpDantzig:
+			m_mlcp = std::make_unique<btDantzigSolver>();
+			break;
+		case SolverKind::MlcpProjectedGaussSeidel:
+			m_mlcp = std::make_unique<btSolveProjectedGaussSeidel>();
+			break;
+	}
+	m_solver = std::make_unique<btMLCPSolver>(m_mlcp.get());
+}
+
+OwnedSolver::~OwnedSolver() = default;
+
+int OwnedSolver::fallbacks() const
+{
+	return m_mlcp ? static_cast<const btMLCPSolver*>(m_solver.get())->getNumFallbacks() : 0;
+}
+
+void configureWorld(btDynamicsWorld& world, const WorldSolverSettings& settings)
+{
+	if (settings.iterations < 1 || settings.iterations > 100000)
+	{
+		throw std::invalid_argument("iterations: " + std::to_string(settings.iterations) + " is not in [1, 100000]");
+	}
+	if (!(settings.erp > 0 && settings.erp <= 1))
+	{
+		throw std::invalid_argument("erp: " + std::to_string(settings.erp) + " is not in (0, 1]");
+	}
+	btContactSolverInfo& info = world.getSolverInfo();
+	info.m_numIterations = settings.iterations;
+	info.m_erp = btScalar(settings.erp);
+	if (settings.randomize_order)
+		info.m_solverMode |= SOLVER_RANDMIZE_ORDER;
+	else
+		info.m_solverMode &= ~SOLVER_RANDMIZE_ORDER;
+}
+
+void configureJoint(btTypedConstraint& joint, const JointSolverSettings& settings, bool allowSplitPositionCorrection)
+{
+	if (!(settings.warm_starting_factor >= 0 && settings.warm_starting_factor <= 1))
+	{
+		throw std::invalid_argument("warm starting factor: " + std::to_string(settings.warm_starting_factor) + " is not in [0, 1]");
+	}
+	if (settings.override_iterations < 0)
+	{
+		throw std::invalid_argument("override iterations: " + std::to_string(settings.override_iterations) + " is not in [0, inf)");
+	}
+	joint.setWarmStartingFactor(btScalar(settings.warm_starting_factor));
+	joint.setOverrideNumSolverIterations(settings.override_iterations > 0 ? settings.override_iterations : -1);
+	joint.setSplitPositionCorrection(settings.split_position_correction && allowSplitPositionCorrection);
+}
+}  // namespace plastic

@@ -1,0 +1,95 @@
+// Solver settings for jointed structures at game frame rates, in one small object with units in its names: the
+// world's solver, its iterations and internal step, and what each joint asks of the solver (its own iteration
+// count, warm starting of its rows, split position correction). The defaults are the ones report/GAME_SETTINGS.md
+// measured best at four internal steps per 60 Hz frame and Bullet's 10 iterations (ci/game_settings.sh).
+#pragma once
+
+#include <memory>
+
+#include "btBulletDynamicsCommon.h"
+
+class btMLCPSolverInterface;
+
+namespace plastic
+{
+// What a joint asks of the solver; the joint factory applies it to every joint it makes.
+struct JointSolverSettings
+{
+	// rows of the joint start each step at this factor times their previous impulses (patch 0020,
+	// btTypedConstraint::setWarmStartingFactor); 0 = off, as upstream
+	double warm_starting_factor = 0.0;
+	// btTypedConstraint::setOverrideNumSolverIterations: 0 = the world's iterations
+	int override_iterations = 0;
+	// patch 0002, btTypedConstraint::setSplitPositionCorrection: only joints whose rows hold position errors alone
+	// (the plastic hinge); the factory leaves it off for motors and springs
+	bool split_position_correction = false;
+};
+
+// Upstream's behaviour for a joint: no warm starting, the world's iterations, Baumgarte correction (today the
+// same as the default: the toolkit's default is in the world's solver).
+JointSolverSettings upstreamJointSolverSettings();
+
+enum class SolverKind
+{
+	SequentialImpulse,          // btSequentialImpulseConstraintSolver (upstream default)
+	MlcpDantzig,                // btMLCPSolver with btDantzigSolver: a direct solve of the boxed LCP
+	MlcpProjectedGaussSeidel,   // btMLCPSolver with btSolveProjectedGaussSeidel
+};
+
+struct WorldSolverSettings
+{
+	// the toolkit default: a direct solve, so a chain holds at 10 iterations (report/GAME_SETTINGS.md)
+	SolverKind solver = SolverKind::MlcpDantzig;
+	int iterations = 10;                     // btContactSolverInfo::m_numIterations (Bullet's default 10)
+	double internal_step_s = 1.0 / 240.0;    // fixed internal step: four per 60 Hz frame
+	double erp = 0.2;                        // btContactSolverInfo::m_erp (joints' Baumgarte factor), Bullet's default
+	bool randomize_order = false;            // SOLVER_RANDMIZE_ORDER
+};
+
+// A constraint solver of a kind; it owns the MLCP interface it needs.
+class OwnedSolver
+{
+public:
+	explicit OwnedSolver(SolverKind kind);
+	~OwnedSolver();
+	btConstraintSolver* get() { return m_solver.get(); }
+	// steps in which the MLCP solver failed and fell back to sequential impulse (btMLCPSolver::getNumFallbacks); 0 for SI
+	int fallbacks() const;
+
+private:
+	std::unique_ptr<btMLCPSolverInterface> m_mlcp;
+	std::unique_ptr<btConstraintSolver> m_solver;
+};
+
+// Bullet's own defaults: btSequentialImpulseConstraintSolver, 10 iterations, ERP 0.2, 1/240 s.
+WorldSolverSettings upstreamWorldSolverSettings();
+
+// A discrete dynamics world for a structure (collision configuration, dispatcher, broadphase, the settings' solver),
+// zero gravity until the scene sets it. stepFrame advances one frame in fixed internal steps of the settings.
+class StructureWorld
+{
+public:
+	explicit StructureWorld(const WorldSolverSettings& settings = WorldSolverSettings());
+	~StructureWorld();
+	StructureWorld(const StructureWorld&) = delete;
+	StructureWorld& operator=(const StructureWorld&) = delete;
+	btDiscreteDynamicsWorld& world() { return *m_world; }
+	int solverFallbacks() const { return m_solver.fallbacks(); }
+	const WorldSolverSettings& settings() const { return m_settings; }
+	// stepSimulation(frame, enough substeps, internal step); returns the internal steps taken
+	int stepFrame(double frame_s);
+
+private:
+	WorldSolverSettings m_settings;
+	std::unique_ptr<btDefaultCollisionConfiguration> m_configuration;
+	std::unique_ptr<btCollisionDispatcher> m_dispatcher;
+	std::unique_ptr<btDbvtBroadphase> m_broadphase;
+	OwnedSolver m_solver;
+	std::unique_ptr<btDiscreteDynamicsWorld> m_world;
+};
+
+// The world's solver info from the settings (iterations, ERP, solver mode).
+void configureWorld(btDynamicsWorld& world, const WorldSolverSettings& settings);
+// A joint's solver settings; split_position_correction only where allowMomentumFreeCorrection.
+void configureJoint(btTypedConstraint& joint, const JointSolverSettings& settings, bool allowSplitPositionCorrection);
+}  // namespace plastic
