@@ -87,7 +87,12 @@ void configureWorld(btDynamicsWorld& world, const WorldSolverSettings& settings)
 	{
 		throw std::invalid_argument("erp: " + std::to_string(settings.erp) + " is not in (0, 1]");
 	}
+	if (!(settings.global_cfm >= 0 && settings.global_cfm <= 1))
+	{
+		throw std::invalid_argument("global cfm: " + std::to_string(settings.global_cfm) + " is not in [0, 1]");
+	}
 	btContactSolverInfo& info = world.getSolverInfo();
+	info.m_globalCfm = btScalar(settings.global_cfm);
 	info.m_numIterations = settings.iterations;
 	info.m_erp = btScalar(settings.erp);
 	if (settings.randomize_order)

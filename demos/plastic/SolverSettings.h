@@ -44,6 +44,10 @@ struct WorldSolverSettings
 	double internal_step_s = 1.0 / 240.0;    // fixed internal step: four per 60 Hz frame
 	double erp = 0.2;                        // btContactSolverInfo::m_erp (joints' Baumgarte factor), Bullet's default
 	bool randomize_order = false;            // SOLVER_RANDMIZE_ORDER
+	// btContactSolverInfo::m_globalCfm (s x the diagonal's units: m_A(i, i) += cfm / dt in the MLCP), 0 as upstream. A
+	// structure whose joints close a loop (a frame fixed at both bases) has redundant rows: its MLCP matrix is singular
+	// and the direct solve fails (and falls back to sequential impulse) unless a small CFM regularises it.
+	double global_cfm = 0.0;
 };
 
 // A constraint solver of a kind; it owns the MLCP interface it needs.
