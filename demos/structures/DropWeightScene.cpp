@@ -114,7 +114,7 @@ DropWeightScene::DropWeightScene(const DropWeightParameters& p) : m(std::make_un
 	s.carriage = makeBody(segments.front()->getMass(), s.carriageShape, btTransform(btMatrix3x3::getIdentity(), s.rightEnd));
 	s.carriage->setActivationState(DISABLE_DEACTIVATION);
 	s.rig.world().addRigidBody(s.carriage.get(), 0, 0);
-	s.carriageInWorld = std::make_unique<BodyInWorld>(BodyInWorld{s.rig.world(), *s.carriage});
+	s.carriageInWorld.reset(new BodyInWorld{s.rig.world(), *s.carriage});  // in place: a temporary would take the body out
 	s.slide = std::make_unique<btGeneric6DofConstraint>(s.rig.ground(), *s.carriage,
 														s.rig.ground().getCenterOfMassTransform().inverse() * btTransform::getIdentity(), btTransform::getIdentity(), true);
 	s.slide->setLinearLowerLimit(btVector3(1, 0, 0));  // lower > upper: free along x
@@ -148,7 +148,7 @@ DropWeightScene::DropWeightScene(const DropWeightParameters& p) : m(std::make_un
 	s.ball->setActivationState(DISABLE_DEACTIVATION);
 	s.ball->setLinearVelocity(btVector3(0, btScalar(-p.impact_speed_m_s), 0));
 	s.rig.world().addRigidBody(s.ball.get());
-	s.ballInWorld = std::make_unique<BodyInWorld>(BodyInWorld{s.rig.world(), *s.ball});
+	s.ballInWorld.reset(new BodyInWorld{s.rig.world(), *s.ball});
 	for (btRigidBody* b : segments) b->setFriction(0);
 
 	s.angles.emplace_back(nullptr);
