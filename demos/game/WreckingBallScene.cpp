@@ -72,7 +72,7 @@ struct WreckingBallScene::State
 		for (const auto& l : links) add(*l);
 		return e;
 	}
-	bool ballTouchesFrame() const;
+	bool ballTouchesFrame() const;  // a contact between the ball and the frame pushed in the last step
 	void afterInternalStep(double step_s);
 	static void tick(btDynamicsWorld* world, btScalar step_s) { static_cast<State*>(world->getWorldUserInfo())->afterInternalStep(double(step_s)); }
 
@@ -123,7 +123,7 @@ bool WreckingBallScene::State::ballTouchesFrame() const
 		const btCollisionObject* other = m->getBody0() == ball.get() ? m->getBody1() : m->getBody1() == ball.get() ? m->getBody0() : nullptr;
 		if (!other || std::find(frameBodies.begin(), frameBodies.end(), other) == frameBodies.end()) continue;
 		for (int c = 0; c < m->getNumContacts(); c++)
-			if (m->getContactPoint(c).getDistance() < btScalar(1e-3)) return true;
+			if (m->getContactPoint(c).getAppliedImpulse() > 0) return true;
 	}
 	return false;
 }
