@@ -98,11 +98,12 @@ ControlledScene cantileverControls()
 		requireValid(validateCantileverParameters(p));
 		return std::make_unique<CantileverScene>(p);
 	};
-	c.camera_distance_m = 4.5f;
-	c.camera_yaw_deg = 180;  // from +z
+	// from +z (yaw 180), the beam and its swing in the lower half (the ledger is drawn in the upper one)
+	c.camera_distance_m = 2.8f;
+	c.camera_yaw_deg = 180;
 	c.camera_target_m[0] = 1.0f;
-	c.camera_target_m[1] = -0.6f;
-	c.time_scale = 1;
+	c.camera_target_m[1] = 0.4f;
+	c.time_scale = 0.1f;  // it turns 1.5 rad in 0.15 s
 	return c;
 }
 
@@ -123,10 +124,10 @@ ControlledScene portalControls()
 		requireValid(validatePortalParameters(p));
 		return std::make_unique<PortalScene>(p);
 	};
-	c.camera_distance_m = 8;
+	c.camera_distance_m = 3.6f;
 	c.camera_yaw_deg = 180;
 	c.camera_target_m[0] = 2;
-	c.camera_target_m[1] = 1.2f;
+	c.camera_target_m[1] = 2.9f;
 	c.time_scale = 2;
 	return c;
 }
@@ -149,11 +150,11 @@ ControlledScene dropWeightControls()
 		requireValid(validateDropWeightParameters(p));
 		return std::make_unique<DropWeightScene>(p);
 	};
-	c.camera_distance_m = 3;
+	c.camera_distance_m = 1.2f;
 	c.camera_yaw_deg = 180;
 	c.camera_target_m[0] = 1;
-	c.camera_target_m[1] = -0.3f;
-	c.time_scale = 0.25f;
+	c.camera_target_m[1] = 0.3f;
+	c.time_scale = 0.05f;  // the impact is over in 0.05 s
 	return c;
 }
 }  // namespace structures
