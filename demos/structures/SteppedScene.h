@@ -1,4 +1,4 @@
-// What a scene shows while it runs, one internal step at a time: the console runners loop over step() until done();
+// What a scene shows while it runs, one step at a time: the console runners loop over step() until done();
 // the ExampleBrowser examples step it to the browser's clock, draw its world, colour its joints by their state and
 // print its ledger. Nothing here draws (no OpenGL): the examples read it.
 #pragma once
@@ -45,7 +45,7 @@ class SteppedScene
 {
 public:
 	virtual ~SteppedScene() = default;
-	virtual void step() = 0;  // one internal step
+	virtual void step() = 0;  // one step of the scene's clock: an internal step (structures), a 60 Hz frame (the game scene)
 	virtual bool done() const = 0;
 	virtual double time_s() const = 0;
 	virtual btDiscreteDynamicsWorld& world() = 0;
