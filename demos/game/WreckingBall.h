@@ -83,7 +83,7 @@ struct WreckingBallResult
 	WreckingBallEstimate estimate;
 	std::vector<FrameJointResult> joints;
 	double impact_kinetic_j = 0;     // ball and chain, measured before the first step in which a contact of the ball pushed the frame (0: none)
-	double impact_speed_m_s = 0;
+	double impact_speed_m_s = 0;     // of the ball's centre, then
 	double gravity_work_j = 0;       // potential energy given up, from the bodies' heights
 	double kinetic_j = 0;            // every moving body, at the end
 	double elastic_j = 0;            // stored in elastic joints, at the end

@@ -40,7 +40,7 @@ btMatrix3x3 alongY(const btVector3& dir)
 
 struct WreckingBallScene::State
 {
-	explicit State(const WreckingBallParameters& params) : p(params), estimate(wreckingBallEstimate(p)), structure(p.solver), ledger(btVector3(0, btScalar(-p.gravity_m_s2), 0)) {}
+	explicit State(const WreckingBallParameters& params) : p(params), estimate(wreckingBallEstimate(p)), structure(p.solver), ledger(btVector3(0, btScalar(-p.gravity_m_s2), 0)), swing(btVector3(0, btScalar(-p.gravity_m_s2), 0)) {}
 
 	plastic::BeamSpec memberSpec(const btVector3& start, const btVector3& end, int segments) const
 	{
@@ -59,19 +59,7 @@ struct WreckingBallScene::State
 	}
 
 	double relativeRotation(size_t i) const { return angles[i].second->angle_rad() - angles[i].first->angle_rad(); }
-	double chainAndBallKinetic() const
-	{
-		double e = 0;
-		auto add = [&e](const btRigidBody& b)
-		{
-			const btVector3 w = b.getWorldTransform().getBasis().transpose() * b.getAngularVelocity();
-			const btVector3 I = b.getLocalInertia();
-			e += 0.5 * b.getMass() * b.getLinearVelocity().length2() + 0.5 * (I.x() * w.x() * w.x() + I.y() * w.y() * w.y() + I.z() * w.z() * w.z());
-		};
-		add(*ball);
-		for (const auto& l : links) add(*l);
-		return e;
-	}
+	double chainAndBallKinetic() const { return swing.measure().kinetic_j; }
 	bool ballTouchesFrame() const;  // a contact between the ball and the frame pushed in the last step
 	void afterInternalStep(double step_s);
 	static void tick(btDynamicsWorld* world, btScalar step_s) { static_cast<State*>(world->getWorldUserInfo())->afterInternalStep(double(step_s)); }
@@ -79,7 +67,8 @@ struct WreckingBallScene::State
 	WreckingBallParameters p;
 	WreckingBallEstimate estimate;
 	plastic::StructureWorld structure;
-	plastic::EnergyLedger ledger;
+	plastic::EnergyLedger ledger;  // every moving body and every joint
+	plastic::EnergyLedger swing;   // the ball and its chain
 	// the ground: a static slab whose top is y = 0
 	btBoxShape groundShape{btVector3(20, 0.5, 20)};
 	std::unique_ptr<btRigidBody> ground;
@@ -102,7 +91,9 @@ struct WreckingBallScene::State
 	std::vector<const btRigidBody*> frameBodies;
 	double initial_mechanical_j = 0;  // kinetic + potential at the start
 	double previousChainKinetic_j = 0;
+	double previousBallSpeed_m_s = 0;
 	double impact_kinetic_j = 0;
+	double impact_speed_m_s = 0;
 	bool impacted = false;
 	double time_s = 0;          // frames x frame time
 	double internalTime_s = 0;  // internal steps taken
@@ -143,8 +134,10 @@ void WreckingBallScene::State::afterInternalStep(double step_s)
 	{
 		impacted = true;
 		impact_kinetic_j = previousChainKinetic_j;
+		impact_speed_m_s = previousBallSpeed_m_s;
 	}
 	previousChainKinetic_j = chainAndBallKinetic();
+	previousBallSpeed_m_s = ball->getLinearVelocity().length();
 }
 
 WreckingBallScene::WreckingBallScene(const WreckingBallParameters& p)
@@ -243,7 +236,12 @@ WreckingBallScene::WreckingBallScene(const WreckingBallParameters& p)
 	s.chain.push_back(std::make_unique<btPoint2PointConstraint>(*s.links.back(), *s.ball, end, -dir * btScalar(p.ball_radius_m)));
 	for (auto& c : s.chain) world.addConstraint(c.get(), true);
 	s.ledger.addBody(*s.ball);
-	for (auto& l : s.links) s.ledger.addBody(*l);
+	s.swing.addBody(*s.ball);
+	for (auto& l : s.links)
+	{
+		s.ledger.addBody(*l);
+		s.swing.addBody(*l);
+	}
 
 	const plastic::Energies e = s.ledger.measure();
 	s.initial_mechanical_j = e.kinetic_j + e.potential_j;
@@ -325,7 +323,7 @@ WreckingBallResult WreckingBallScene::result() const
 	}
 	const plastic::Energies e = s.ledger.measure();
 	r.impact_kinetic_j = s.impact_kinetic_j;
-	r.impact_speed_m_s = s.impacted ? std::sqrt(2.0 * s.impact_kinetic_j / (s.p.ball_mass_kg + s.p.chain_mass_kg / 3.0)) : 0.0;
+	r.impact_speed_m_s = s.impact_speed_m_s;
 	r.gravity_work_j = s.initial_mechanical_j - e.potential_j;  // the ball starts at rest: the initial mechanical energy is potential
 	r.kinetic_j = e.kinetic_j;
 	r.elastic_j = e.elastic_j;

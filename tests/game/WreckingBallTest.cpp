@@ -43,6 +43,8 @@ TEST(WreckingBall, ImpactAtSixtyHertzWithTheEnergyOfTheSwing)
 	EXPECT_EQ(r.solver_fallbacks, 0);
 	EXPECT_GT(r.impact_kinetic_j, 0.99 * r.estimate.release_energy_j);
 	EXPECT_LT(r.impact_kinetic_j, 1.001 * r.estimate.release_energy_j);
+	// the ball's own speed (its centre), against the rigid pendulum's 7.0 m/s
+	EXPECT_NEAR(r.impact_speed_m_s, r.estimate.impact_speed_m_s, 0.01 * r.estimate.impact_speed_m_s);
 }
 
 // No energy gain over the run (kinetic + potential + plastic never above the start, 0.1 % of the swing's energy
