@@ -11,6 +11,7 @@
 #include "EnergyLedger.h"
 #include "JointSites.h"
 #include "Measures.h"
+#include "Pendulum.h"
 #include "StructureRig.h"
 #include "WreckingBall.h"
 
@@ -27,15 +28,6 @@ std::unique_ptr<btRigidBody> makeBody(double mass_kg, btCollisionShape& shape, c
 	return std::make_unique<btRigidBody>(info);
 }
 
-// a basis whose y axis is dir (a capsule's axis)
-btMatrix3x3 alongY(const btVector3& dir)
-{
-	const btVector3 z(0, 0, 1);
-	const btVector3 x = dir.cross(z).normalized();
-	btMatrix3x3 b;
-	b.setValue(x.x(), dir.x(), z.x(), x.y(), dir.y(), z.y(), x.z(), dir.z(), z.z());
-	return b;
-}
 }  // namespace
 
 struct WreckingBallScene::State
@@ -82,12 +74,8 @@ struct WreckingBallScene::State
 	std::vector<std::pair<const structures::PlanarAngle*, const structures::PlanarAngle*>> angles;  // per joint: body a, body b
 	std::vector<double> measuredAtBreak;  // per joint, the measured rotation when it broke (NaN: not broken)
 	std::vector<double> brokenAt_s;
-	// the ball and its chain
-	std::unique_ptr<btSphereShape> ballShape;
-	std::unique_ptr<btCapsuleShape> linkShape;
-	std::unique_ptr<btRigidBody> ball;
-	std::vector<std::unique_ptr<btRigidBody>> links;
-	std::vector<std::unique_ptr<btPoint2PointConstraint>> chain;
+	std::unique_ptr<Pendulum> pendulum;  // the ball and its chain
+	btRigidBody* ball = nullptr;
 	std::vector<const btRigidBody*> frameBodies;
 	double initial_mechanical_j = 0;  // kinetic + potential at the start
 	double previousChainKinetic_j = 0;
@@ -111,7 +99,7 @@ bool WreckingBallScene::State::ballTouchesFrame() const
 	for (int i = 0; i < dispatcher->getNumManifolds(); i++)
 	{
 		const btPersistentManifold* m = dispatcher->getManifoldByIndexInternal(i);
-		const btCollisionObject* other = m->getBody0() == ball.get() ? m->getBody1() : m->getBody1() == ball.get() ? m->getBody0() : nullptr;
+		const btCollisionObject* other = m->getBody0() == ball ? m->getBody1() : m->getBody1() == ball ? m->getBody0() : nullptr;
 		if (!other || std::find(frameBodies.begin(), frameBodies.end(), other) == frameBodies.end()) continue;
 		for (int c = 0; c < m->getNumContacts(); c++)
 			if (m->getContactPoint(c).getAppliedImpulse() > 0) return true;
@@ -210,34 +198,22 @@ WreckingBallScene::WreckingBallScene(const WreckingBallParameters& p)
 		s.ledger.addBody(*path[i]);
 	}
 
-	// the ball at the release angle, away from the frame (towards -x), and the chain from the pivot to it
-	const btScalar R = btScalar(p.chain_length_m + p.ball_radius_m);
-	const btVector3 bottom(btScalar(-(p.section_depth_m / 2 + p.ball_radius_m + 0.02)), btScalar(p.impact_height_m), 0);
-	const btVector3 pivot = bottom + btVector3(0, R, 0);
-	const btVector3 dir(btScalar(-std::sin(p.release_angle_rad)), btScalar(-std::cos(p.release_angle_rad)), 0);  // pivot -> ball
-	s.ballShape = std::make_unique<btSphereShape>(btScalar(p.ball_radius_m));
-	s.ball = makeBody(p.ball_mass_kg, *s.ballShape, btTransform(btMatrix3x3::getIdentity(), pivot + dir * R));
-	s.ball->setFriction(btScalar(p.ball_friction));
-	s.ball->setRestitution(0);
-	s.ball->setActivationState(DISABLE_DEACTIVATION);
-	world.addRigidBody(s.ball.get());
-	const btScalar link = btScalar(p.chain_length_m / p.chain_links);
-	s.linkShape = std::make_unique<btCapsuleShape>(btScalar(std::min(0.04, 0.2 * link)), link);
-	const btMatrix3x3 linkBasis = alongY(-dir);  // local +y points up the chain, towards the pivot
-	for (int i = 0; i < p.chain_links; i++)
-	{
-		s.links.push_back(makeBody(p.chain_mass_kg / p.chain_links, *s.linkShape, btTransform(linkBasis, pivot + dir * ((btScalar(i) + btScalar(0.5)) * link))));
-		s.links.back()->setActivationState(DISABLE_DEACTIVATION);
-		world.addRigidBody(s.links.back().get(), 0, 0);  // the chain collides with nothing
-	}
-	const btVector3 top(0, link / 2, 0), end(0, -link / 2, 0);
-	s.chain.push_back(std::make_unique<btPoint2PointConstraint>(*s.links.front(), top));  // to the fixed pivot
-	for (size_t i = 1; i < s.links.size(); i++) s.chain.push_back(std::make_unique<btPoint2PointConstraint>(*s.links[i - 1], *s.links[i], end, top));
-	s.chain.push_back(std::make_unique<btPoint2PointConstraint>(*s.links.back(), *s.ball, end, -dir * btScalar(p.ball_radius_m)));
-	for (auto& c : s.chain) world.addConstraint(c.get(), true);
+	// the ball at the release angle, away from the frame (towards -x); at the bottom of its swing 2 cm from the column
+	PendulumSpec pendulum;
+	pendulum.bottom_m = btVector3(btScalar(-(p.section_depth_m / 2 + p.ball_radius_m + 0.02)), btScalar(p.impact_height_m), 0);
+	pendulum.ball_mass_kg = p.ball_mass_kg;
+	pendulum.ball_radius_m = p.ball_radius_m;
+	pendulum.ball_friction = p.ball_friction;
+	pendulum.chain_length_m = p.chain_length_m;
+	pendulum.chain_links = p.chain_links;
+	pendulum.chain_mass_kg = p.chain_mass_kg;
+	pendulum.release_angle_rad = p.release_angle_rad;
+	pendulum.release_direction = -1;
+	s.pendulum = std::make_unique<Pendulum>(world, pendulum);
+	s.ball = &s.pendulum->ball();
 	s.ledger.addBody(*s.ball);
 	s.swing.addBody(*s.ball);
-	for (auto& l : s.links)
+	for (const btRigidBody* l : s.pendulum->links())
 	{
 		s.ledger.addBody(*l);
 		s.swing.addBody(*l);
@@ -255,9 +231,7 @@ WreckingBallScene::~WreckingBallScene()
 	State& s = *m;
 	btDiscreteDynamicsWorld& world = s.structure.world();
 	world.setInternalTickCallback(nullptr);
-	for (auto& c : s.chain) world.removeConstraint(c.get());
-	for (auto& l : s.links) world.removeRigidBody(l.get());
-	world.removeRigidBody(s.ball.get());
+	s.pendulum.reset();
 	world.removeConstraint(s.base.constraint.get());
 	s.columnRight.reset();
 	s.beam.reset();
@@ -271,12 +245,7 @@ btDiscreteDynamicsWorld& WreckingBallScene::world() { return m->structure.world(
 const btRigidBody& WreckingBallScene::ball() const { return *m->ball; }
 const WreckingBallParameters& WreckingBallScene::parameters() const { return m->p; }
 std::vector<const btRigidBody*> WreckingBallScene::frameBodies() const { return m->frameBodies; }
-std::vector<const btRigidBody*> WreckingBallScene::chainBodies() const
-{
-	std::vector<const btRigidBody*> b;
-	for (const auto& l : m->links) b.push_back(l.get());
-	return b;
-}
+std::vector<const btRigidBody*> WreckingBallScene::chainBodies() const { return m->pendulum->links(); }
 
 void WreckingBallScene::step()
 {
