@@ -16,7 +16,8 @@ const float kMarkerOffset_m = 0.15f;
 
 namespace
 {
-const float* rgbaOf(JointColour c) { return c == JointColour::Broken ? kBrokenRgba : c == JointColour::Yielded ? kYieldedRgba : kSteelRgba; }
+const float* rgbaOf(JointColour c) { return c == JointColour::Broken ? kBrokenRgba : c == JointColour::Yielded ? kYieldedRgba
+																											   : kSteelRgba; }
 
 const float* colourOf(const btCollisionObject* object, const std::map<const btRigidBody*, JointColour>& states)
 {
@@ -32,7 +33,8 @@ std::map<const btRigidBody*, JointColour> bodyStates(const std::vector<structure
 	std::map<const btRigidBody*, JointColour> states;
 	for (const structures::JointView& j : joints)
 	{
-		const JointColour c = j.broken ? JointColour::Broken : j.yielded ? JointColour::Yielded : JointColour::Elastic;
+		const JointColour c = j.broken ? JointColour::Broken : j.yielded ? JointColour::Yielded
+																		 : JointColour::Elastic;
 		for (const btRigidBody* b : {j.body_a, j.body_b})
 		{
 			if (!b || b->getInvMass() == 0) continue;
@@ -79,7 +81,8 @@ void drawJointMarkers(GUIHelperInterface* guiHelper, structures::SteppedScene& s
 	if (!renderer) return;
 	for (const structures::JointView& j : joints)
 	{
-		const float* rgba = j.broken ? kBrokenRgba : j.yielded ? kYieldedRgba : kElasticMarkerRgba;
+		const float* rgba = j.broken ? kBrokenRgba : j.yielded ? kYieldedRgba
+															   : kElasticMarkerRgba;
 		// in front of the member (the cameras look along -z), so the depth test does not hide it inside the body
 		const float position[4] = {float(j.pivot_m.x()), float(j.pivot_m.y()), float(j.pivot_m.z() + kMarkerOffset_m), 1};
 		renderer->drawPoint(position, rgba, 12);

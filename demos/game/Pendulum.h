@@ -12,15 +12,15 @@ namespace game
 {
 struct PendulumSpec
 {
-	btVector3 bottom_m{0, 0, 0};       // the ball's centre at the bottom of its swing (the pivot is straight above)
+	btVector3 bottom_m{0, 0, 0};  // the ball's centre at the bottom of its swing (the pivot is straight above)
 	double ball_mass_kg = 2000;
 	double ball_radius_m = 0.4;
 	double ball_friction = 0.5;
-	double chain_length_m = 5.0;       // pivot to the ball's surface
+	double chain_length_m = 5.0;  // pivot to the ball's surface
 	int chain_links = 8;
 	double chain_mass_kg = 80;
-	double release_angle_rad = 1.0;    // about world z, from the vertical
-	double release_direction = -1.0;   // -1: released towards -x, +1: towards +x
+	double release_angle_rad = 1.0;   // about world z, from the vertical
+	double release_direction = -1.0;  // -1: released towards -x, +1: towards +x
 };
 
 class Pendulum

@@ -68,38 +68,38 @@ WreckingBallEstimate wreckingBallEstimate(const WreckingBallParameters& p);
 // One plastic joint of the frame after a run.
 struct FrameJointResult
 {
-	std::string name;                   // base-left, column-left-1.., knee-left, beam-1.., knee-right, column-right-1.., base-right
+	std::string name;  // base-left, column-left-1.., knee-left, beam-1.., knee-right, column-right-1.., base-right
 	double plastic_moment_nm = 0;
-	double booked_rotation_rad = 0;     // accumulated plastic rotation the joint booked (0: hinge-motor stand-in)
-	double measured_rotation_rad = 0;   // its rotation measured from the bodies (at the step it broke, if it broke)
+	double booked_rotation_rad = 0;    // accumulated plastic rotation the joint booked (0: hinge-motor stand-in)
+	double measured_rotation_rad = 0;  // its rotation measured from the bodies (at the step it broke, if it broke)
 	double booked_work_j = 0;
-	double measured_work_j = 0;         // Mp x |measured rotation|
+	double measured_work_j = 0;  // Mp x |measured rotation|
 	bool broken = false;
-	double broken_at_s = -1;            // -1: not broken
+	double broken_at_s = -1;  // -1: not broken
 };
 
 struct WreckingBallResult
 {
 	WreckingBallEstimate estimate;
 	std::vector<FrameJointResult> joints;
-	double impact_kinetic_j = 0;     // ball and chain, measured before the first step in which a contact of the ball pushed the frame (0: none)
-	double impact_speed_m_s = 0;     // of the ball's centre, then
-	double gravity_work_j = 0;       // potential energy given up, from the bodies' heights
-	double kinetic_j = 0;            // every moving body, at the end
-	double elastic_j = 0;            // stored in elastic joints, at the end
+	double impact_kinetic_j = 0;  // ball and chain, measured before the first step in which a contact of the ball pushed the frame (0: none)
+	double impact_speed_m_s = 0;  // of the ball's centre, then
+	double gravity_work_j = 0;    // potential energy given up, from the bodies' heights
+	double kinetic_j = 0;         // every moving body, at the end
+	double elastic_j = 0;         // stored in elastic joints, at the end
 	double plastic_booked_j = 0;
-	double plastic_measured_j = 0;   // sum of the joints' measured work
-	double max_energy_gain_j = 0;    // largest (kinetic + elastic + booked plastic) - (initial kinetic + gravity work) over the frames
-	double dissipated_j = 0;         // (initial kinetic + gravity work) - (kinetic + elastic + booked plastic) at the end: contacts, solver
+	double plastic_measured_j = 0;  // sum of the joints' measured work
+	double max_energy_gain_j = 0;   // largest (kinetic + elastic + booked plastic) - (initial kinetic + gravity work) over the frames
+	double dissipated_j = 0;        // (initial kinetic + gravity work) - (kinetic + elastic + booked plastic) at the end: contacts, solver
 	int yielded_joints = 0;
 	int broken_joints = 0;
 	long frames = 0;
 	long internal_steps = 0;
 	double simulated_s = 0;
-	double wall_s = 0;               // stepping only (not building)
-	double real_time_factor = 0;     // simulated_s / wall_s
+	double wall_s = 0;            // stepping only (not building)
+	double real_time_factor = 0;  // simulated_s / wall_s
 	double max_frame_wall_s = 0;
-	int solver_fallbacks = 0;        // MLCP steps that fell back to sequential impulse
+	int solver_fallbacks = 0;  // MLCP steps that fell back to sequential impulse
 	bool finite = true;
 };
 

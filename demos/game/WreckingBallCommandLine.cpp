@@ -64,10 +64,14 @@ const std::map<std::string, Flag>& flags()
 					"NAME  joint method: hinge-motor, plastic-hinge, elastic-plastic, elastic-plastic2; default plastic-hinge"}},
 		{"solver", {[](P& p, const std::string& t)
 					{
-						if (t == "dantzig") p.solver.solver = plastic::SolverKind::MlcpDantzig;
-						else if (t == "pgs") p.solver.solver = plastic::SolverKind::MlcpProjectedGaussSeidel;
-						else if (t == "sequential-impulse") p.solver.solver = plastic::SolverKind::SequentialImpulse;
-						else return false;
+						if (t == "dantzig")
+							p.solver.solver = plastic::SolverKind::MlcpDantzig;
+						else if (t == "pgs")
+							p.solver.solver = plastic::SolverKind::MlcpProjectedGaussSeidel;
+						else if (t == "sequential-impulse")
+							p.solver.solver = plastic::SolverKind::SequentialImpulse;
+						else
+							return false;
 						return true;
 					},
 					"NAME  dantzig (toolkit default: MLCP, direct), pgs (MLCP, projected Gauss-Seidel), sequential-impulse (upstream)"}},

@@ -21,9 +21,12 @@ const char* solverName(plastic::SolverKind k)
 {
 	switch (k)
 	{
-		case plastic::SolverKind::SequentialImpulse: return "sequential-impulse";
-		case plastic::SolverKind::MlcpDantzig: return "dantzig";
-		case plastic::SolverKind::MlcpProjectedGaussSeidel: return "pgs";
+		case plastic::SolverKind::SequentialImpulse:
+			return "sequential-impulse";
+		case plastic::SolverKind::MlcpDantzig:
+			return "dantzig";
+		case plastic::SolverKind::MlcpProjectedGaussSeidel:
+			return "pgs";
 	}
 	return "?";
 }

@@ -72,7 +72,7 @@ struct WreckingBallScene::State
 	std::vector<structures::JointSite> sites;
 	std::vector<std::unique_ptr<structures::PlanarAngle>> bodyAngles;
 	std::vector<std::pair<const structures::PlanarAngle*, const structures::PlanarAngle*>> angles;  // per joint: body a, body b
-	std::vector<double> measuredAtBreak;  // per joint, the measured rotation when it broke (NaN: not broken)
+	std::vector<double> measuredAtBreak;                                                            // per joint, the measured rotation when it broke (NaN: not broken)
 	std::vector<double> brokenAt_s;
 	std::unique_ptr<Pendulum> pendulum;  // the ball and its chain
 	btRigidBody* ball = nullptr;
@@ -99,7 +99,8 @@ bool WreckingBallScene::State::ballTouchesFrame() const
 	for (int i = 0; i < dispatcher->getNumManifolds(); i++)
 	{
 		const btPersistentManifold* m = dispatcher->getManifoldByIndexInternal(i);
-		const btCollisionObject* other = m->getBody0() == ball ? m->getBody1() : m->getBody1() == ball ? m->getBody0() : nullptr;
+		const btCollisionObject* other = m->getBody0() == ball ? m->getBody1() : m->getBody1() == ball ? m->getBody0()
+																									   : nullptr;
 		if (!other || std::find(frameBodies.begin(), frameBodies.end(), other) == frameBodies.end()) continue;
 		for (int c = 0; c < m->getNumContacts(); c++)
 			if (m->getContactPoint(c).getAppliedImpulse() > 0) return true;

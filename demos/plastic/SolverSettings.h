@@ -31,19 +31,19 @@ JointSolverSettings upstreamJointSolverSettings();
 
 enum class SolverKind
 {
-	SequentialImpulse,          // btSequentialImpulseConstraintSolver (upstream default)
-	MlcpDantzig,                // btMLCPSolver with btDantzigSolver: a direct solve of the boxed LCP
-	MlcpProjectedGaussSeidel,   // btMLCPSolver with btSolveProjectedGaussSeidel
+	SequentialImpulse,         // btSequentialImpulseConstraintSolver (upstream default)
+	MlcpDantzig,               // btMLCPSolver with btDantzigSolver: a direct solve of the boxed LCP
+	MlcpProjectedGaussSeidel,  // btMLCPSolver with btSolveProjectedGaussSeidel
 };
 
 struct WorldSolverSettings
 {
 	// the toolkit default: a direct solve, so a chain holds at 10 iterations (report/GAME_SETTINGS.md)
 	SolverKind solver = SolverKind::MlcpDantzig;
-	int iterations = 10;                     // btContactSolverInfo::m_numIterations (Bullet's default 10)
-	double internal_step_s = 1.0 / 240.0;    // fixed internal step: four per 60 Hz frame
-	double erp = 0.2;                        // btContactSolverInfo::m_erp (joints' Baumgarte factor), Bullet's default
-	bool randomize_order = false;            // SOLVER_RANDMIZE_ORDER
+	int iterations = 10;                   // btContactSolverInfo::m_numIterations (Bullet's default 10)
+	double internal_step_s = 1.0 / 240.0;  // fixed internal step: four per 60 Hz frame
+	double erp = 0.2;                      // btContactSolverInfo::m_erp (joints' Baumgarte factor), Bullet's default
+	bool randomize_order = false;          // SOLVER_RANDMIZE_ORDER
 	// btContactSolverInfo::m_globalCfm (s x the diagonal's units: m_A(i, i) += cfm / dt in the MLCP), 0 as upstream. A
 	// structure whose joints close a loop (a frame fixed at both bases) has redundant rows: its MLCP matrix is singular
 	// and the direct solve fails (and falls back to sequential impulse) unless a small CFM regularises it.

@@ -97,8 +97,8 @@ struct DropWeightScene::State
 	// the bodies along the beam, site i joins body i and i + 1: the left support, the inner joints, the right support
 	std::vector<PlanarAngle> angles;
 	std::unique_ptr<plastic::EnergyLedger> ledger;
-	std::vector<JointSite> sites;       // the plastic joints
-	std::vector<size_t> siteIndex;      // their sites in angles
+	std::vector<JointSite> sites;   // the plastic joints
+	std::vector<size_t> siteIndex;  // their sites in angles
 	size_t mid = 0;
 	btVector3 midLocal{0, 0, 0};
 	double kinetic_after_impact_j = std::numeric_limits<double>::quiet_NaN();

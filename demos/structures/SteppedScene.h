@@ -28,14 +28,14 @@ constexpr double kYieldedRotation_rad = 1e-4;
 // The energies of a run as far as it has come, measured from the bodies and the loads, beside the analytic answer.
 struct SceneLedger
 {
-	std::string title;                  // scene, method
+	std::string title;  // scene, method
 	double time_s = 0;
-	double load_work_j = 0;             // work of the applied loads (or of gravity), from the loads' points
-	double kinetic_j = 0;               // of every moving body
-	double plastic_booked_j = 0;        // what the joints booked
-	double plastic_measured_j = 0;      // Mp x |rotations| measured from the bodies
-	std::vector<std::string> answer;    // the analytic answer, one line each
-	std::vector<std::string> status;    // what the run has found so far (collapse, stop, broken joints)
+	double load_work_j = 0;           // work of the applied loads (or of gravity), from the loads' points
+	double kinetic_j = 0;             // of every moving body
+	double plastic_booked_j = 0;      // what the joints booked
+	double plastic_measured_j = 0;    // Mp x |rotations| measured from the bodies
+	std::vector<std::string> answer;  // the analytic answer, one line each
+	std::vector<std::string> status;  // what the run has found so far (collapse, stop, broken joints)
 };
 
 // The ledger as text lines (J, rad, s) for the screen.
