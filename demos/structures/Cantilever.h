@@ -5,9 +5,11 @@
 // root and stops where the load's work equals the plastic work, P L sin(theta) = Mp theta.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "SteppedScene.h"
 #include "StructureRig.h"
 
 namespace structures
@@ -72,5 +74,25 @@ struct CantileverResult
 
 std::vector<std::string> validateCantileverParameters(const CantileverParameters& p);
 CantileverAnswer cantileverAnswer(const CantileverParameters& p);
+// The scene, built from its parameters, one internal step at a time (the runner and the browser example both use it).
+class CantileverScene : public SteppedScene
+{
+public:
+	explicit CantileverScene(const CantileverParameters& p);
+	~CantileverScene() override;
+	void step() override;
+	bool done() const override;
+	double time_s() const override;
+	btDiscreteDynamicsWorld& world() override;
+	std::vector<JointView> joints() const override;
+	SceneLedger ledger() const override;
+	CantileverResult result() const;  // measured now
+
+private:
+	struct State;
+	std::unique_ptr<State> m;
+};
+
+// CantileverScene stepped until it is done.
 CantileverResult runCantilever(const CantileverParameters& p);
 }  // namespace structures

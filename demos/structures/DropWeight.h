@@ -8,9 +8,11 @@
 // Mp x (theta + 2 theta + theta) (clamped), theta the rotation of each half.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "SteppedScene.h"
 #include "StructureRig.h"
 
 namespace structures
@@ -68,5 +70,26 @@ struct DropWeightResult
 
 std::vector<std::string> validateDropWeightParameters(const DropWeightParameters& p);
 DropWeightAnswer dropWeightAnswer(const DropWeightParameters& p);
+// The scene, built from its parameters, one internal step at a time (the runner and the browser example both use it).
+class DropWeightScene : public SteppedScene
+{
+public:
+	explicit DropWeightScene(const DropWeightParameters& p);
+	~DropWeightScene() override;
+	void step() override;
+	bool done() const override;
+	double time_s() const override;
+	btDiscreteDynamicsWorld& world() override;
+	std::vector<JointView> joints() const override;
+	SceneLedger ledger() const override;
+	DropWeightResult result() const;  // measured now
+	const btRigidBody& ball() const;
+
+private:
+	struct State;
+	std::unique_ptr<State> m;
+};
+
+// DropWeightScene stepped until it is done.
 DropWeightResult runDropWeight(const DropWeightParameters& p);
 }  // namespace structures

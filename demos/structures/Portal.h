@@ -6,9 +6,11 @@
 // independent mechanisms, computed from the parameters.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "SteppedScene.h"
 #include "StructureRig.h"
 
 namespace structures
@@ -90,5 +92,25 @@ struct PortalResult
 
 std::vector<std::string> validatePortalParameters(const PortalParameters& p);
 PortalAnswer portalAnswer(const PortalParameters& p);
+// The scene, built from its parameters, one internal step at a time (the runner and the browser example both use it).
+class PortalScene : public SteppedScene
+{
+public:
+	explicit PortalScene(const PortalParameters& p);
+	~PortalScene() override;
+	void step() override;
+	bool done() const override;
+	double time_s() const override;
+	btDiscreteDynamicsWorld& world() override;
+	std::vector<JointView> joints() const override;
+	SceneLedger ledger() const override;
+	PortalResult result() const;  // measured now
+
+private:
+	struct State;
+	std::unique_ptr<State> m;
+};
+
+// PortalScene stepped until it is done.
 PortalResult runPortal(const PortalParameters& p);
 }  // namespace structures
