@@ -6,12 +6,17 @@
 #   figures/<method>_<moment>.png, figures/contact-sheet.png   thesis figures 3.1-3.7, every method
 #   charpy.gif, energy.png, moment-rotation.png   the run as an animation (browser frames), its energies
 #                                           against time and its joint's moment against rotation
+# and the game scene (a wrecking ball hits a steel frame at 60 Hz frames) to build/wrecking-ball-report/:
+#   summary.txt, result.json, joints.csv, history.csv   the console runner (energy balance measured from the
+#                                           bodies, per-joint plastic energies, broken joints, real-time factor)
+#   frames/frame<n>.png, wrecking-ball.gif  the ExampleBrowser app through OSMesa, every second 60 Hz frame
+#   energy.png, joint-energy.png            energies against time, plastic energy per joint
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/deps.sh
 bash ci/configure.sh -DBP_BUILD_TESTS=OFF -DBP_BUILD_BROWSER=ON
 build="${BUILD_DIR:-build}"
-cmake --build "$build" --target charpy plasticity_browser charpy_figures
+cmake --build "$build" --target charpy plasticity_browser charpy_figures wrecking_ball
 out="$build/charpy-report"
 rm -rf "$out"
 mkdir -p "$out/browser"
@@ -28,3 +33,14 @@ mkdir -p "$out/animation"
 "$build/bin/charpy_figures" --out="$out/figures" | tail -1
 python3 ci/charpy_pictures.py --history="$out/history.csv" --frames="$out/animation" --out-dir="$out" --fps=12
 echo "report written to $out/ (summary.txt, result.json, history.csv, browser/, figures/, charpy.gif, energy.png, moment-rotation.png)"
+
+# the game scene: the default run (3 s of 60 Hz frames), then the same run rendered, every second frame written
+game="$build/wrecking-ball-report"
+rm -rf "$game"
+mkdir -p "$game/frames"
+"$build/bin/wrecking_ball" --joints-csv="$game/joints.csv" --history="$game/history.csv" | tee "$game/summary.txt"
+"$build/bin/wrecking_ball" --json > "$game/result.json.tmp" && mv "$game/result.json.tmp" "$game/result.json"
+(cd "$game/frames" && "$bin/plasticity_browser" --window_backend=osmesa "--start_demo_name=Wrecking ball" --nogui \
+	--png_file=frame --png_skip_frames=1 --fixed_timestep=0.0166667 --max_frames=180 --width=640 --height=400 >/dev/null)
+python3 ci/game_pictures.py --history="$game/history.csv" --joints="$game/joints.csv" --frames="$game/frames" --out-dir="$game" --fps=30
+echo "report written to $game/ (summary.txt, result.json, joints.csv, history.csv, frames/, wrecking-ball.gif, energy.png, joint-energy.png)"

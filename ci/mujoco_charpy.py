@@ -54,7 +54,7 @@ PARAMETERS = {
     "anvil_gap_m": (0.040, "m", "g: open space between the anvils' edges", 0.0, False),
     "anvil_width_m": (0.040, "m", "each anvil along Z", 0.0, False),
     "anvil_edge_radius_m": (0.001, "m", "radius of the anvils' inner edges (0 = sharp)", 0.0, True),
-    "striker_radius_m": (0.002, "m", "radius of the striker edge (a capsule along Y)", 0.0, False),
+    "striker_radius_m": (0.002, "m", "radius of the striker edge (a capsule along Y); 0 = the thesis' flat nose (a box as thick as the hammer)", 0.0, True),
     "hammer_mass_kg": (19.5, "kg", "hammer head mass", 0.0, False),
     "hammer_length_m": (0.5, "m", "head along X", 0.0, False),
     "hammer_height_m": (0.25, "m", "head along Y", 0.0, False),
@@ -189,6 +189,13 @@ def model_xml(p):
         world.append(f'<geom name="ledge{side:+.0f}" type="box" pos="{b:.9g} {y0 - 0.01:.9g} {zc:.9g}" size="{b:.9g} 0.01 {hz:.9g}"/>')
     half = L / 4.0
     blade_len = p["hammer_draft_m"] - rs
+    if rs > 0:
+        striker_geoms = (
+            f'<geom name="striker" type="capsule" fromto="{rs:.9g} {-arm_drop - NOSE_HEIGHT_M / 2:.9g} 0 {rs:.9g} {-arm_drop + NOSE_HEIGHT_M / 2:.9g} 0" size="{rs:.9g}" mass="0" contype="2" conaffinity="2"/>\n'
+            f'      <geom name="blade" type="box" pos="{rs + blade_len / 2:.9g} {-arm_drop:.9g} 0" size="{blade_len / 2:.9g} {NOSE_HEIGHT_M / 2:.9g} {rs:.9g}" mass="0" contype="2" conaffinity="2"/>')
+    else:  # the thesis' flat nose: a box of the draft's length, as thick as the hammer
+        striker_geoms = (
+            f'<geom name="striker" type="box" pos="{p["hammer_draft_m"] / 2:.9g} {-arm_drop:.9g} 0" size="{p["hammer_draft_m"] / 2:.9g} {NOSE_HEIGHT_M / 2:.9g} {p["hammer_thickness_m"] / 2:.9g}" mass="0" contype="2" conaffinity="2"/>')
     return f"""<mujoco model="charpy-peer">
   <compiler angle="radian" autolimits="true"/>
   <option timestep="{p['dt_s']:.12g}" iterations="{p['iterations']}" gravity="0 {-GRAVITY_M_S2} 0">
@@ -212,8 +219,7 @@ def model_xml(p):
       <joint name="pivot" type="hinge" axis="0 0 1" pos="0 0 0"/>
       <inertial pos="{cx:.9g} {cy:.9g} 0" mass="{p['hammer_mass_kg']:.9g}" diaginertia="{ixx:.9g} {iyy:.9g} {izz:.9g}"/>
       <geom name="head" type="box" pos="{cx:.9g} {cy:.9g} 0" size="{p['hammer_length_m'] / 2:.9g} {p['hammer_height_m'] / 2:.9g} {p['hammer_thickness_m'] / 2:.9g}" mass="0" contype="2" conaffinity="2"/>
-      <geom name="striker" type="capsule" fromto="{rs:.9g} {-arm_drop - NOSE_HEIGHT_M / 2:.9g} 0 {rs:.9g} {-arm_drop + NOSE_HEIGHT_M / 2:.9g} 0" size="{rs:.9g}" mass="0" contype="2" conaffinity="2"/>
-      <geom name="blade" type="box" pos="{rs + blade_len / 2:.9g} {-arm_drop:.9g} 0" size="{blade_len / 2:.9g} {NOSE_HEIGHT_M / 2:.9g} {rs:.9g}" mass="0" contype="2" conaffinity="2"/>
+      {striker_geoms}
     </body>
   </worldbody>
 </mujoco>

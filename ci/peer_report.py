@@ -79,14 +79,18 @@ def section(peer, ours):
     ref_text = (f"`{ref['key']}`: {number(ref, 'energy_loss_J'):.1f} J, {number(ref, 'error_pct'):+.1f} % against its analytic "
                 f"{analytic:.2f} J" + (f", {100.0 * (number(ref, 'energy_loss_J') - our_analytic) / our_analytic:+.1f} % against our "
                                       f"runner's {our_analytic:.2f} J" if our_analytic else "")) if ref else "none"
+    striker_radius = number(peer[0], "striker_radius_m")
+    striker = ("the thesis' flat striker nose (a box as thick as the hammer)" if striker_radius == 0
+               else f"a striker edge of {mm('striker_radius_m')} mm radius")
+    anvils = ("sharp edges" if number(peer[0], "anvil_edge_radius_m") == 0 else f"edges of {mm('anvil_edge_radius_m')} mm radius")
     return f"""
 
 ## Peer: MuJoCo {version} (same frame steps, timed the same way)
 
 The same Charpy test in MuJoCo (`ci/mujoco_charpy.py`, swept by `ci/peer_sweep.py` into `charpy-peer.csv`, parameters
 from {peer[0].get('parameters_from', '?')}): two rigid halves joined at the notch by a hinge whose `frictionloss` is
-Mp = {f(number(peer[0], 'plastic_moment_Nm'), '{:.2f}')} N m, a striker edge of {mm('striker_radius_m')} mm radius, anvils
-{mm('anvil_gap_m')} mm apart with edges of {mm('anvil_edge_radius_m')} mm radius, a {f(number(peer[0], 'hammer_mass_kg'), '{:g}')} kg hammer at
+Mp = {f(number(peer[0], 'plastic_moment_Nm'), '{:.2f}')} N m, {striker}, anvils
+{mm('anvil_gap_m')} mm apart with {anvils}, a {f(number(peer[0], 'hammer_mass_kg'), '{:g}')} kg hammer at
 {f(number(peer[0], 'impact_speed_m_s'), '{:.2f}')} m/s; contact friction {f(number(peer[0], 'friction'), '{:g}')}, inelastic contacts as
 stiff as MuJoCo allows (time constant 2 steps). MuJoCo's timestep is the frame step (no contact substeps). Its analytic Mp * theta_pass
 with its anvil edge radius is {f(analytic, '{:.2f}')} J (theta_pass {f(number(peer[0], 'theta_pass_rad'), '{:.4f}')} rad). Converged run

@@ -6,6 +6,7 @@
 #include "LinearMath/btAlignedObjectArray.h"
 
 #include "CharpyExample.h"
+#include "StructureExample.h"
 
 namespace
 {
@@ -21,8 +22,9 @@ struct ExampleEntry
 // Option: the Charpy method number (thesis order).
 const ExampleEntry kPlasticityExamples[] = {
 	{0, "Plasticity", "Plastic deformation and ductile breaking of rigid-body joints.", 0, 0},
-	{1, "Charpy", "Charpy impact test: a 19.5 kg hammer breaks a notched 10 x 10 x 55 mm steel specimen. "
-				  "Choose the joining method and the parameters with the controls; the energy balance is shown on screen.",
+	{1, "Charpy",
+	 "Charpy impact test: a 19.5 kg hammer breaks a notched 10 x 10 x 55 mm steel specimen. "
+	 "Choose the joining method and the parameters with the controls; the energy balance is shown on screen.",
 	 CharpyExampleCreateFunc, 6},
 	{1, "Charpy rigid", "Method 1: the specimen is one rigid body.", CharpyExampleCreateFunc, 1},
 	{1, "Charpy brittle", "Method 2: btGeneric6DofConstraint with zero limits and a breaking impulse.", CharpyExampleCreateFunc, 2},
@@ -32,6 +34,22 @@ const ExampleEntry kPlasticityExamples[] = {
 	{1, "Charpy plastic-hinge", "Method 6: btPlasticHingeConstraint.", CharpyExampleCreateFunc, 6},
 	{1, "Charpy elastic-plastic", "Method 7: bt6DofElasticPlasticConstraint.", CharpyExampleCreateFunc, 7},
 	{1, "Charpy elastic-plastic2", "Method 8: bt6DofElasticPlastic2Constraint.", CharpyExampleCreateFunc, 8},
+	{0, "Structures", "Structures with textbook answers, built by the scenes build/bin/structures runs.", 0, 0},
+	{1, "Cantilever",
+	 "A tip-loaded cantilever in segments: collapse at P = Mp / L at the root; a dead load above it stops where "
+	 "P L sin(theta) = Mp theta. Yielded joints turn orange, broken ones red; the ledger is on screen.",
+	 CantileverExampleCreateFunc, 0},
+	{1, "Portal frame",
+	 "A fixed-base portal frame under H at the left knee and V at mid-span, the load factor ramped until the "
+	 "beam, sway or combined mechanism forms.",
+	 PortalExampleCreateFunc, 0},
+	{1, "Drop weight", "A ball strikes a simply supported or clamped beam: kinetic energy after the impact = Mp x hinge rotations.",
+	 DropWeightExampleCreateFunc, 0},
+	{0, "Game", "A steel frame at 60 Hz frames with the toolkit's game solver settings.", 0, 0},
+	{1, "Wrecking ball",
+	 "A wrecking ball on a chain hits a steel portal frame of plastic I-section joints: it bends, keeps its "
+	 "shape and breaks where a joint passes its plastic rotation. The scene build/bin/wrecking_ball runs.",
+	 WreckingBallExampleCreateFunc, 0},
 };
 }  // namespace
 

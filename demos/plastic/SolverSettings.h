@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
 #include "btBulletDynamicsCommon.h"
 
@@ -36,6 +37,11 @@ enum class SolverKind
 	MlcpProjectedGaussSeidel,   // btMLCPSolver with btSolveProjectedGaussSeidel
 };
 
+// "sequential-impulse", "dantzig", "pgs" (command lines, JSON, reports)
+const char* solverKindName(SolverKind kind);
+// the kind of one of those names; false (kind untouched) for any other text
+bool parseSolverKind(const std::string& name, SolverKind& kind);
+
 struct WorldSolverSettings
 {
 	// the toolkit default: a direct solve, so a chain holds at 10 iterations (report/GAME_SETTINGS.md)
@@ -44,17 +50,32 @@ struct WorldSolverSettings
 	double internal_step_s = 1.0 / 240.0;    // fixed internal step: four per 60 Hz frame
 	double erp = 0.2;                        // btContactSolverInfo::m_erp (joints' Baumgarte factor), Bullet's default
 	bool randomize_order = false;            // SOLVER_RANDMIZE_ORDER
+	// btMLCPSolver: constraint force mixing of the direct solve only, mlcp_cfm / dt added to the diagonal of its
+	// matrix as btContactSolverInfo::m_globalCfm would be (its sequential-impulse fallback and the other solvers
+	// are untouched). Closed loops (a portal frame fixed at both bases, a beam on two supports) have redundant
+	// rows; without it their matrix is singular, Dantzig fails in most steps and each such step is solved by
+	// sequential impulse instead (report/STRUCTURES.md). 0 = upstream.
+	double mlcp_cfm = 1e-8;
+	// when the direct solve still fails (Dantzig's pivoting stalls on degenerate rows at their bounds, as the
+	// elastic-plastic joints' in a few steps of a portal), it is tried once more with this factor times mlcp_cfm
+	// before btMLCPSolver falls back to sequential impulse for the step; <= 1: no retry
+	double mlcp_retry_cfm_factor = 10;
+	// btDantzigSolver rejects a solution with an impulse of this size or more (N s) and the step falls back to
+	// sequential impulse; upstream's limit is 1000 N s
+	double mlcp_max_impulse_ns = 1000.0;
 };
 
 // A constraint solver of a kind; it owns the MLCP interface it needs.
 class OwnedSolver
 {
 public:
-	explicit OwnedSolver(SolverKind kind);
+	explicit OwnedSolver(SolverKind kind, double mlcpMaxImpulse_ns = 1000.0, double mlcpCfm = 0.0, double mlcpRetryCfmFactor = 0.0);
 	~OwnedSolver();
 	btConstraintSolver* get() { return m_solver.get(); }
 	// steps in which the MLCP solver failed and fell back to sequential impulse (btMLCPSolver::getNumFallbacks); 0 for SI
 	int fallbacks() const;
+	// steps in which the direct solve was tried a second time with the larger CFM (WorldSolverSettings::mlcp_retry_cfm_factor)
+	int retries() const;
 
 private:
 	std::unique_ptr<btMLCPSolverInterface> m_mlcp;
@@ -75,9 +96,13 @@ public:
 	StructureWorld& operator=(const StructureWorld&) = delete;
 	btDiscreteDynamicsWorld& world() { return *m_world; }
 	int solverFallbacks() const { return m_solver.fallbacks(); }
+	int solverRetries() const { return m_solver.retries(); }
 	const WorldSolverSettings& settings() const { return m_settings; }
 	// stepSimulation(frame, enough substeps, internal step); returns the internal steps taken
 	int stepFrame(double frame_s);
+	// exactly one internal step of the settings (stepSimulation(internal step, 0)), for scenes that act before and
+	// after every internal step
+	void stepOnce();
 
 private:
 	WorldSolverSettings m_settings;

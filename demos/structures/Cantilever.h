@@ -5,9 +5,11 @@
 // root and stops where the load's work equals the plastic work, P L sin(theta) = Mp theta.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "SteppedScene.h"
 #include "StructureRig.h"
 
 namespace structures
@@ -54,6 +56,7 @@ struct CantileverResult
 	double root_rotation_rad = 0;  // at the end, measured from the bodies (positive: the tip went down)
 	double max_root_rotation_rad = 0;
 	double max_inner_rotation_rad = 0;    // largest |rotation| of any inner joint over the run, from the bodies
+	double creep_rad = 0;                 // largest change of a joint's rotation over the last two thirds of the run
 	double stop_rotation_rad = 0;         // root rotation when the beam stopped (constant dead load; NaN: it did not)
 	double load_work_j = 0;               // the load times its point's displacement
 	double kinetic_j = 0;                 // from the bodies' velocities, at the end
@@ -61,6 +64,8 @@ struct CantileverResult
 	double booked_plastic_work_j = 0;     // what the joints booked (0 for the hinge-motor stand-in)
 	double energy_balance_error_pct = 0;  // (load work - kinetic - geometric plastic work) / load work
 	int holds = 0;                        // ramp: how many times the load was held (more than one: softening or vibration was not a collapse)
+	int solver_fallbacks = 0;             // internal steps in which btMLCPSolver fell back to sequential impulse
+	int solver_retries = 0;               // internal steps whose direct solve was tried again with a larger CFM
 	long steps = 0;
 	double simulated_s = 0;
 	double wall_s = 0;
@@ -69,5 +74,25 @@ struct CantileverResult
 
 std::vector<std::string> validateCantileverParameters(const CantileverParameters& p);
 CantileverAnswer cantileverAnswer(const CantileverParameters& p);
+// The scene, built from its parameters, one internal step at a time (the runner and the browser example both use it).
+class CantileverScene : public SteppedScene
+{
+public:
+	explicit CantileverScene(const CantileverParameters& p);
+	~CantileverScene() override;
+	void step() override;
+	bool done() const override;
+	double time_s() const override;
+	btDiscreteDynamicsWorld& world() override;
+	std::vector<JointView> joints() const override;
+	SceneLedger ledger() const override;
+	CantileverResult result() const;  // measured now
+
+private:
+	struct State;
+	std::unique_ptr<State> m;
+};
+
+// CantileverScene stepped until it is done.
 CantileverResult runCantilever(const CantileverParameters& p);
 }  // namespace structures

@@ -25,7 +25,7 @@ std::vector<std::string> validateCantileverParameters(const CantileverParameters
 	requireRange(e, "mechanism-rotation", p.mechanism_rotation_rad, 1e-4, 3, "rad");
 	requireRange(e, "hold", p.hold_s, 1e-3, 100, "s");
 	requireRange(e, "duration", p.duration_s, 1e-3, 1000, "s");
-	if (e.empty() && p.duration_s / p.solver.step_s > 1e8) e.push_back("duration / dt: more than 1e8 steps");
+	if (e.empty() && p.duration_s / p.solver.world.internal_step_s > 1e8) e.push_back("duration / dt: more than 1e8 steps");
 	return e;
 }
 

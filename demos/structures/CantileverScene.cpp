@@ -1,113 +1,220 @@
-// The cantilever scene: built from its parameters by the toolkit, run, measured from the bodies.
+// The cantilever scene: built from its parameters by the toolkit, stepped, measured from the bodies.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
 
 #include "BeamBuilder.h"
 #include "Cantilever.h"
-#include "EnergyLedger.h"
 #include "CollapseTest.h"
+#include "EnergyLedger.h"
+#include "JointSites.h"
 #include "Measures.h"
 
 namespace structures
 {
-CantileverResult runCantilever(const CantileverParameters& p)
+struct CantileverScene::State
 {
-	const auto start = std::chrono::steady_clock::now();
-	CantileverResult r;
-	r.answer = cantileverAnswer(p);
-	const double mp = r.answer.plastic_moment_nm;
-	StructureRig rig(p.solver);
-	// the support: the ground, the member along +x from the origin
-	plastic::BeamSpec spec;
-	spec.start_m = btVector3(0, 0, 0);
-	spec.end_m = btVector3(btScalar(p.length_m), 0, 0);
-	spec.segments = p.segments;
-	spec.section = plastic::rectangle(p.section_width_m, p.section_depth_m);
-	spec.material.yield_stress_pa = p.yield_stress_pa;
-	spec.material.youngs_modulus_pa = p.youngs_modulus_pa;
-	spec.material.density_kg_m3 = p.density_kg_m3;
-	spec.bending_axis = btVector3(0, 0, 1);
-	spec.method = p.solver.method;
-	plastic::Beam beam(rig.world(), spec, &rig.ground());
-	for (btRigidBody* b : beam.segments()) b->setCollisionFlags(b->getCollisionFlags() | btCollisionObject::CF_NO_CONTACT_RESPONSE);
-	btRigidBody* tip = beam.segments().back();
-	// the segment's local z is the member axis: the tip is half a segment out
-	ScaledLoad load(*tip, btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, btScalar(-r.answer.collapse_load_n), 0), p.follower_load);
-	const bool ramp = p.ramp_rate_per_s > 0;
-	CollapseTest test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * r.answer.collapse_ratio, p.collapse_rate_rad_s,
-					   p.rate_window_s, p.mechanism_rotation_rad, p.hold_s});
-	load.setFactor(ramp ? 0.0 : p.load_ratio);
-	std::vector<PlanarAngle> angles;  // the ground, then each segment
-	angles.emplace_back(nullptr);
-	for (btRigidBody* b : beam.segments()) angles.emplace_back(b);
-	plastic::EnergyLedger ledger(btVector3(0, 0, 0));
-	for (btRigidBody* b : beam.segments()) ledger.addBody(*b);
-
-	rig.beforeEachStep([&](double step_s)
-					   {
-		if (ramp)
-		{
-			test.advance(step_s);
-			load.setFactor(test.factor());
-		}
-		load.apply();
-		beam.updateForStep(step_s); });
-	rig.afterEachStep([&]
-					  {
-		load.afterStep();
-		for (PlanarAngle& a : angles) a.update(); });
-	auto jointRotation = [&](size_t j)
-	{ return angles[j + 1].angle_rad() - angles[j].angle_rad(); };
-	r.stop_rotation_rad = std::numeric_limits<double>::quiet_NaN();
-	double maxKinetic = 0;
-	while (rig.time_s() < p.duration_s - 1e-12)
+	explicit State(const CantileverParameters& params)
+		: p(params), start(std::chrono::steady_clock::now()), answer(cantileverAnswer(p)), rig(p.solver), beam(rig.world(), beamSpec(p), &rig.ground()), load(*beam.segments().back(), btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, btScalar(-answer.collapse_load_n), 0), p.follower_load), test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * answer.collapse_ratio, p.collapse_rate_rad_s, p.rate_window_s, p.mechanism_rotation_rad, p.hold_s}), ledger(btVector3(0, 0, 0))
 	{
-		rig.step();
-		const double root = -jointRotation(0);  // the tip going down is clockwise
-		r.max_root_rotation_rad = std::max(r.max_root_rotation_rad, std::fabs(root));
-		for (size_t j = 1; j < beam.joints().size(); j++) r.max_inner_rotation_rad = std::max(r.max_inner_rotation_rad, std::fabs(jointRotation(j)));
-		if (!std::isfinite(root))
+	}
+
+	static plastic::BeamSpec beamSpec(const CantileverParameters& p)
+	{
+		// the support: the ground, the member along +x from the origin
+		plastic::BeamSpec spec;
+		spec.start_m = btVector3(0, 0, 0);
+		spec.end_m = btVector3(btScalar(p.length_m), 0, 0);
+		spec.segments = p.segments;
+		spec.section = plastic::rectangle(p.section_width_m, p.section_depth_m);
+		spec.material.yield_stress_pa = p.yield_stress_pa;
+		spec.material.youngs_modulus_pa = p.youngs_modulus_pa;
+		spec.material.density_kg_m3 = p.density_kg_m3;
+		spec.bending_axis = btVector3(0, 0, 1);
+		spec.method = p.solver.method;
+		return spec;
+	}
+
+	double jointRotation(size_t j) const { return angles[j + 1].angle_rad() - angles[j].angle_rad(); }
+
+	CantileverParameters p;
+	std::chrono::steady_clock::time_point start;
+	CantileverAnswer answer;
+	StructureRig rig;
+	plastic::Beam beam;
+	// the segment's local z is the member axis: the tip is half a segment out
+	ScaledLoad load;
+	CollapseTest test;
+	std::vector<PlanarAngle> angles;  // the ground, then each segment
+	plastic::EnergyLedger ledger;
+	std::vector<JointSite> sites;
+	bool ramp = false;
+	bool finished = false;
+	bool finite = true;
+	std::vector<int> mechanism;
+	double stop_rotation_rad = std::numeric_limits<double>::quiet_NaN();
+	double max_root_rotation_rad = 0;
+	double max_inner_rotation_rad = 0;
+	double maxKinetic = 0;
+	std::vector<double> atThird;  // the rotations a third into the run: what they change by after it is creep
+};
+
+CantileverScene::CantileverScene(const CantileverParameters& p) : m(std::make_unique<State>(p))
+{
+	State& s = *m;
+	for (btRigidBody* b : s.beam.segments()) b->setCollisionFlags(b->getCollisionFlags() | btCollisionObject::CF_NO_CONTACT_RESPONSE);
+	s.ramp = p.ramp_rate_per_s > 0;
+	s.load.setFactor(s.ramp ? 0.0 : p.load_ratio);
+	s.angles.emplace_back(nullptr);
+	for (btRigidBody* b : s.beam.segments()) s.angles.emplace_back(b);
+	for (btRigidBody* b : s.beam.segments()) s.ledger.addBody(*b);
+	for (size_t j = 0; j < s.beam.joints().size(); j++)
+		s.sites.push_back(jointSite(s.beam.joints()[j], j ? s.beam.segments()[j - 1] : nullptr, *s.beam.segments()[j], s.beam.jointSpecs()[j].pivot_m));
+	State* state = m.get();
+	s.rig.beforeEachStep([state](double step_s)
+						 {
+		if (state->ramp)
 		{
-			r.finite = false;
-			break;
+			state->test.advance(step_s);
+			state->load.setFactor(state->test.factor());
 		}
-		if (ramp)
+		state->load.apply();
+		state->beam.updateForStep(step_s); });
+	s.rig.afterEachStep([state]
+						{
+		state->load.afterStep();
+		for (PlanarAngle& a : state->angles) a.update(); });
+}
+
+CantileverScene::~CantileverScene() = default;
+
+bool CantileverScene::done() const { return m->finished || m->rig.time_s() >= m->p.duration_s - 1e-12; }
+double CantileverScene::time_s() const { return m->rig.time_s(); }
+btDiscreteDynamicsWorld& CantileverScene::world() { return m->rig.world(); }
+
+void CantileverScene::step()
+{
+	State& s = *m;
+	if (done()) return;
+	s.rig.step();
+	if (s.atThird.empty() && s.rig.time_s() >= s.p.duration_s / 3 - 1e-12)
+	{
+		for (size_t j = 0; j < s.beam.joints().size(); j++) s.atThird.push_back(s.jointRotation(j));
+	}
+	const double root = -s.jointRotation(0);  // the tip going down is clockwise
+	s.max_root_rotation_rad = std::max(s.max_root_rotation_rad, std::fabs(root));
+	for (size_t j = 1; j < s.beam.joints().size(); j++) s.max_inner_rotation_rad = std::max(s.max_inner_rotation_rad, std::fabs(s.jointRotation(j)));
+	if (!std::isfinite(root))
+	{
+		s.finite = false;
+		s.finished = true;
+		return;
+	}
+	if (s.ramp)
+	{
+		std::vector<double> rotations;
+		for (size_t j = 0; j < s.beam.joints().size(); j++) rotations.push_back(s.jointRotation(j));
+		s.test.update(s.rig.time_s(), rotations);
+		if (s.test.done())
 		{
-			std::vector<double> rotations;
-			for (size_t j = 0; j < beam.joints().size(); j++) rotations.push_back(jointRotation(j));
-			test.update(rig.time_s(), rotations);
-			if (test.done())
-			{
-				r.mechanism = test.mechanism(rotations);
-				break;
-			}
-		}
-		else if (!p.follower_load && p.load_ratio > 1)
-		{
-			const double kinetic = ledger.measure().kinetic_j;
-			maxKinetic = std::max(maxKinetic, kinetic);
-			// stopped: (almost) no kinetic energy left, or turning back (elastic joints spring back)
-			if (root > 0.01 && (kinetic < 1e-4 * maxKinetic || root < r.max_root_rotation_rad - 1e-3))
-			{
-				r.stop_rotation_rad = r.max_root_rotation_rad;
-				break;
-			}
+			s.mechanism = s.test.mechanism(rotations);
+			s.finished = true;
 		}
 	}
-	r.collapse_ratio = test.collapseFactor();
-	r.holds = test.holds();
-	r.root_rotation_rad = -jointRotation(0);
-	r.load_work_j = load.work_j();
-	r.kinetic_j = ledger.measure().kinetic_j;
-	for (size_t j = 0; j < beam.joints().size(); j++) r.geometric_plastic_work_j += mp * std::fabs(jointRotation(j));
-	r.booked_plastic_work_j = beam.plasticWork_j();
+	else if (!s.p.follower_load && s.p.load_ratio > 1)
+	{
+		const double kinetic = s.ledger.measure().kinetic_j;
+		s.maxKinetic = std::max(s.maxKinetic, kinetic);
+		// stopped: (almost) no kinetic energy left, or turning back (elastic joints spring back)
+		if (root > 0.01 && (kinetic < 1e-4 * s.maxKinetic || root < s.max_root_rotation_rad - 1e-3))
+		{
+			s.stop_rotation_rad = s.max_root_rotation_rad;
+			s.finished = true;
+		}
+	}
+}
+
+CantileverResult CantileverScene::result() const
+{
+	const State& s = *m;
+	CantileverResult r;
+	r.answer = s.answer;
+	const double mp = s.answer.plastic_moment_nm;
+	r.mechanism = s.mechanism;
+	r.stop_rotation_rad = s.stop_rotation_rad;
+	r.max_root_rotation_rad = s.max_root_rotation_rad;
+	r.max_inner_rotation_rad = s.max_inner_rotation_rad;
+	r.finite = s.finite;
+	r.collapse_ratio = s.test.collapseFactor();
+	r.holds = s.test.holds();
+	r.root_rotation_rad = -s.jointRotation(0);
+	for (size_t j = 0; j < s.atThird.size(); j++) r.creep_rad = std::max(r.creep_rad, std::fabs(s.jointRotation(j) - s.atThird[j]));
+	r.load_work_j = s.load.work_j();
+	r.kinetic_j = s.ledger.measure().kinetic_j;
+	for (size_t j = 0; j < s.beam.joints().size(); j++) r.geometric_plastic_work_j += mp * std::fabs(s.jointRotation(j));
+	r.booked_plastic_work_j = s.beam.plasticWork_j();
 	r.energy_balance_error_pct = r.load_work_j > 0 ? 100.0 * (r.load_work_j - r.kinetic_j - r.geometric_plastic_work_j) / r.load_work_j : 0.0;
-	r.steps = rig.steps();
-	r.simulated_s = rig.time_s();
-	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+	r.solver_fallbacks = s.rig.solverFallbacks();
+	r.solver_retries = s.rig.solverRetries();
+	r.steps = s.rig.steps();
+	r.simulated_s = s.rig.time_s();
+	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - s.start).count();
 	return r;
+}
+
+std::vector<JointView> CantileverScene::joints() const
+{
+	std::vector<JointView> views;
+	for (size_t j = 0; j < m->sites.size(); j++) views.push_back(jointView(m->sites[j], m->jointRotation(j)));
+	return views;
+}
+
+SceneLedger CantileverScene::ledger() const
+{
+	const CantileverResult r = result();
+	const CantileverParameters& p = m->p;
+	SceneLedger l;
+	l.title = std::string("cantilever, ") + plastic::jointMethodName(p.solver.method);
+	l.time_s = r.simulated_s;
+	l.load_work_j = r.load_work_j;
+	l.kinetic_j = r.kinetic_j;
+	l.plastic_booked_j = r.booked_plastic_work_j;
+	l.plastic_measured_j = r.geometric_plastic_work_j;
+	char line[160];
+	std::snprintf(line, sizeof line, "analytic: collapse at P = Mp / L = %.0f N", r.answer.collapse_load_n);
+	l.answer.push_back(line);
+	if (p.ramp_rate_per_s > 0)
+	{
+		std::snprintf(line, sizeof line, "load P L / Mp %.3f", m->load.factor());
+		l.status.push_back(line);
+		if (std::isfinite(r.collapse_ratio))
+		{
+			std::snprintf(line, sizeof line, "collapsed at P L / Mp = %.3f (analytic 1)", r.collapse_ratio);
+			l.status.push_back(line);
+		}
+	}
+	else
+	{
+		std::snprintf(line, sizeof line, "analytic stop (P L sin t = Mp t): %.3f rad", r.answer.stop_rotation_rad);
+		l.answer.push_back(line);
+		std::snprintf(line, sizeof line, "load P L / Mp %.2f, root rotation %.3f rad", p.load_ratio, r.root_rotation_rad);
+		l.status.push_back(line);
+		if (std::isfinite(r.stop_rotation_rad))
+		{
+			std::snprintf(line, sizeof line, "stopped at %.3f rad", r.stop_rotation_rad);
+			l.status.push_back(line);
+		}
+	}
+	return l;
+}
+
+CantileverResult runCantilever(const CantileverParameters& p)
+{
+	CantileverScene scene(p);
+	while (!scene.done()) scene.step();
+	return scene.result();
 }
 }  // namespace structures

@@ -8,9 +8,11 @@
 // Mp x (theta + 2 theta + theta) (clamped), theta the rotation of each half.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "SteppedScene.h"
 #include "StructureRig.h"
 
 namespace structures
@@ -58,6 +60,8 @@ struct DropWeightResult
 	double midspan_error_pct = 0;       // against the estimate
 	double plastic_work_error_pct = 0;  // geometric plastic work against the estimate of the kinetic energy after impact
 	double balance_error_pct = 0;       // (kinetic after impact - kinetic at the end - geometric plastic work) / kinetic after impact
+	int solver_fallbacks = 0;           // internal steps in which btMLCPSolver fell back to sequential impulse
+	int solver_retries = 0;             // internal steps whose direct solve was tried again with a larger CFM
 	long steps = 0;
 	double simulated_s = 0;
 	double wall_s = 0;
@@ -66,5 +70,26 @@ struct DropWeightResult
 
 std::vector<std::string> validateDropWeightParameters(const DropWeightParameters& p);
 DropWeightAnswer dropWeightAnswer(const DropWeightParameters& p);
+// The scene, built from its parameters, one internal step at a time (the runner and the browser example both use it).
+class DropWeightScene : public SteppedScene
+{
+public:
+	explicit DropWeightScene(const DropWeightParameters& p);
+	~DropWeightScene() override;
+	void step() override;
+	bool done() const override;
+	double time_s() const override;
+	btDiscreteDynamicsWorld& world() override;
+	std::vector<JointView> joints() const override;
+	SceneLedger ledger() const override;
+	DropWeightResult result() const;  // measured now
+	const btRigidBody& ball() const;
+
+private:
+	struct State;
+	std::unique_ptr<State> m;
+};
+
+// DropWeightScene stepped until it is done.
 DropWeightResult runDropWeight(const DropWeightParameters& p);
 }  // namespace structures

@@ -18,7 +18,7 @@ std::vector<std::string> validateDropWeightParameters(const DropWeightParameters
 	requireRange(e, "weight-radius", p.weight_radius_m, 1e-3, 10, "m");
 	requireRange(e, "impact-speed", p.impact_speed_m_s, 1e-3, 1000, "m/s");
 	requireRange(e, "duration", p.duration_s, 1e-3, 1000, "s");
-	if (e.empty() && p.duration_s / p.solver.step_s > 1e8) e.push_back("duration / dt: more than 1e8 steps");
+	if (e.empty() && p.duration_s / p.solver.world.internal_step_s > 1e8) e.push_back("duration / dt: more than 1e8 steps");
 	return e;
 }
 

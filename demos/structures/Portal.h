@@ -6,9 +6,11 @@
 // independent mechanisms, computed from the parameters.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "SteppedScene.h"
 #include "StructureRig.h"
 
 namespace structures
@@ -29,8 +31,10 @@ struct PortalParameters
 	double vertical_load_n = 75e3;    // V at lambda = 1: V L / 2 = 3 Mp: the combined mechanism at lambda = 1
 	// the load factor rises at fast_ramp_rate_per_s up to slow_from_fraction of the plastic-analysis collapse
 	// factor, then at ramp_rate_per_s, until a joint turns faster than collapse_rate_rad_s (over rate_window_s);
-	// then it is held: a collapse if the mechanism turns mechanism_rotation_rad within hold_s, else the ramp resumes
+	// then it is held: a collapse if the mechanism turns mechanism_rotation_rad within hold_s, else the ramp resumes.
+	// 0: no ramp, the load factor is load_factor from the start (a hold below collapse: does the frame creep?)
 	double ramp_rate_per_s = 0.02;
+	double load_factor = 0.9;
 	double fast_ramp_rate_per_s = 0.2;
 	double slow_from_fraction = 0.9;
 	double collapse_rate_rad_s = 0.05;
@@ -68,6 +72,8 @@ struct PortalResult
 	double collapse_factor = 0;  // the load factor when the collapse was seen (NaN: never)
 	double collapse_error_pct = 0;
 	std::vector<double> rotations_rad;            // per site at the end, from the bodies
+	double max_rotation_rad = 0;                  // largest |site rotation| over the run
+	double creep_rad = 0;                         // largest change of a site's rotation over the last two thirds of the run
 	std::vector<double> mechanism_rotations_rad;  // per site since the collapse was seen
 	std::vector<int> mechanism_sites;             // the sites that turned >= 20 % of the largest since then
 	bool mechanism_matches = false;
@@ -76,6 +82,8 @@ struct PortalResult
 	double booked_plastic_work_j = 0;
 	double geometric_plastic_work_j = 0;  // Mp x sum |site rotation| from the bodies
 	int holds = 0;                        // ramp: how many times the load was held (more than one: softening or vibration was not a collapse)
+	int solver_fallbacks = 0;             // internal steps in which btMLCPSolver fell back to sequential impulse
+	int solver_retries = 0;               // internal steps whose direct solve was tried again with a larger CFM
 	long steps = 0;
 	double simulated_s = 0;
 	double wall_s = 0;
@@ -84,5 +92,25 @@ struct PortalResult
 
 std::vector<std::string> validatePortalParameters(const PortalParameters& p);
 PortalAnswer portalAnswer(const PortalParameters& p);
+// The scene, built from its parameters, one internal step at a time (the runner and the browser example both use it).
+class PortalScene : public SteppedScene
+{
+public:
+	explicit PortalScene(const PortalParameters& p);
+	~PortalScene() override;
+	void step() override;
+	bool done() const override;
+	double time_s() const override;
+	btDiscreteDynamicsWorld& world() override;
+	std::vector<JointView> joints() const override;
+	SceneLedger ledger() const override;
+	PortalResult result() const;  // measured now
+
+private:
+	struct State;
+	std::unique_ptr<State> m;
+};
+
+// PortalScene stepped until it is done.
 PortalResult runPortal(const PortalParameters& p);
 }  // namespace structures

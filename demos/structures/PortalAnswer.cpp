@@ -26,7 +26,8 @@ std::vector<std::string> validatePortalParameters(const PortalParameters& p)
 	requireRange(e, "horizontal-load", p.horizontal_load_n, 0, 1e12, "N");
 	requireRange(e, "vertical-load", p.vertical_load_n, 0, 1e12, "N");
 	if (e.empty() && p.horizontal_load_n + p.vertical_load_n <= 0) e.push_back("horizontal-load, vertical-load: one of them must be > 0 N");
-	requireRange(e, "ramp-rate", p.ramp_rate_per_s, 1e-6, 100, "1/s");
+	requireRange(e, "ramp-rate", p.ramp_rate_per_s, 0, 100, "1/s (0 = constant --load-factor)");
+	requireRange(e, "load-factor", p.load_factor, 0, 1000, "");
 	requireRange(e, "fast-ramp-rate", p.fast_ramp_rate_per_s, 1e-6, 1000, "1/s");
 	requireRange(e, "slow-from", p.slow_from_fraction, 0, 1, "(of the plastic-analysis collapse factor)");
 	requireRange(e, "collapse-rate", p.collapse_rate_rad_s, 1e-6, 100, "rad/s");
@@ -34,7 +35,7 @@ std::vector<std::string> validatePortalParameters(const PortalParameters& p)
 	requireRange(e, "mechanism-rotation", p.mechanism_rotation_rad, 1e-4, 3, "rad");
 	requireRange(e, "hold", p.hold_s, 1e-3, 100, "s");
 	requireRange(e, "duration", p.duration_s, 1e-3, 10000, "s");
-	if (e.empty() && p.duration_s / p.solver.step_s > 1e8) e.push_back("duration / dt: more than 1e8 steps");
+	if (e.empty() && p.duration_s / p.solver.world.internal_step_s > 1e8) e.push_back("duration / dt: more than 1e8 steps");
 	return e;
 }
 

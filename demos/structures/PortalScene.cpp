@@ -4,24 +4,23 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
 
 #include "BeamBuilder.h"
-#include "EnergyLedger.h"
 #include "CollapseTest.h"
+#include "EnergyLedger.h"
+#include "JointSites.h"
 #include "Measures.h"
 #include "Portal.h"
 
 namespace structures
 {
-PortalResult runPortal(const PortalParameters& p)
+namespace
 {
-	const auto start = std::chrono::steady_clock::now();
-	PortalResult r;
-	r.answer = portalAnswer(p);
-	const double mp = r.answer.plastic_moment_nm;
-	StructureRig rig(p.solver);
+plastic::BeamSpec memberSpec(const PortalParameters& p, const btVector3& start, const btVector3& end, int segments)
+{
 	plastic::BeamSpec spec;
 	spec.section = plastic::rectangle(p.section_width_m, p.section_depth_m);
 	spec.material.yield_stress_pa = p.yield_stress_pa;
@@ -29,106 +28,223 @@ PortalResult runPortal(const PortalParameters& p)
 	spec.material.density_kg_m3 = p.density_kg_m3;
 	spec.bending_axis = btVector3(0, 0, 1);
 	spec.method = p.solver.method;
-	const btScalar L = btScalar(p.span_m), h = btScalar(p.height_m);
-	// left column from its base up, fixed to the ground
-	plastic::BeamSpec left = spec;
-	left.start_m = btVector3(0, 0, 0);
-	left.end_m = btVector3(0, h, 0);
-	left.segments = p.column_segments;
-	plastic::Beam columnLeft(rig.world(), left, &rig.ground());
-	// the beam from the left knee, joined to the left column's top
-	plastic::BeamSpec top = spec;
-	top.start_m = btVector3(0, h, 0);
-	top.end_m = btVector3(L, h, 0);
-	top.segments = p.beam_segments;
-	plastic::Beam beam(rig.world(), top, columnLeft.segments().back());
-	// the right column from the right knee down, joined to the beam's end; its base joined to the ground
-	plastic::BeamSpec right = spec;
-	right.start_m = btVector3(L, h, 0);
-	right.end_m = btVector3(L, 0, 0);
-	right.segments = p.column_segments;
-	plastic::Beam columnRight(rig.world(), right, beam.segments().back());
-	plastic::JointSpec baseSpec = columnRight.jointSpecs().back();
-	baseSpec.pivot_m = btVector3(L, 0, 0);
-	plastic::Joint base = plastic::makeJoint(baseSpec, *columnRight.segments().back(), rig.ground());
-	ConstraintInWorld baseInWorld(rig.world(), *base.constraint);
+	spec.start_m = start;
+	spec.end_m = end;
+	spec.segments = segments;
+	return spec;
+}
+}  // namespace
 
-	// the bodies in order along the frame, the ground at both ends; site i joins body i and body i + 1
-	std::vector<const btRigidBody*> path = {nullptr};
-	for (const plastic::Beam* member : {&columnLeft, &beam, &columnRight})
-		for (btRigidBody* b : member->segments())
-		{
-			path.push_back(b);
-			b->setCollisionFlags(b->getCollisionFlags() | btCollisionObject::CF_NO_CONTACT_RESPONSE);
-		}
-	path.push_back(nullptr);
-	std::vector<PlanarAngle> angles;
-	for (const btRigidBody* b : path) angles.emplace_back(b);
-	std::vector<const plastic::Joint*> joints;
-	for (const plastic::Beam* member : {&columnLeft, &beam, &columnRight})
-		for (const plastic::Joint& j : member->joints()) joints.push_back(&j);
-	joints.push_back(&base);
+struct PortalScene::State
+{
+	explicit State(const PortalParameters& params)
+		: p(params),
+		  start(std::chrono::steady_clock::now()),
+		  answer(portalAnswer(p)),
+		  rig(p.solver),
+		  L(btScalar(p.span_m)),
+		  h(btScalar(p.height_m)),
+		  // left column from its base up, fixed to the ground
+		  columnLeft(rig.world(), memberSpec(p, btVector3(0, 0, 0), btVector3(0, h, 0), p.column_segments), &rig.ground()),
+		  // the beam from the left knee, joined to the left column's top
+		  beam(rig.world(), memberSpec(p, btVector3(0, h, 0), btVector3(L, h, 0), p.beam_segments), columnLeft.segments().back()),
+		  // the right column from the right knee down, joined to the beam's end; its base joined to the ground
+		  columnRight(rig.world(), memberSpec(p, btVector3(L, h, 0), btVector3(L, 0, 0), p.column_segments), beam.segments().back()),
+		  baseSpec(baseOf(columnRight, L)),
+		  base(plastic::makeJoint(baseSpec, *columnRight.segments().back(), rig.ground())),
+		  baseInWorld(rig.world(), *base.constraint),
+		  // loads: H at the left knee (the top end of the left column), V at mid-span (the end of the beam's left half)
+		  horizontal(*columnLeft.segments().back(), btVector3(0, 0, btScalar(columnLeft.segmentLength_m() / 2)),
+					 btVector3(btScalar(p.horizontal_load_n), 0, 0), false),
+		  vertical(*beam.segments()[size_t(p.beam_segments / 2 - 1)], btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)),
+				   btVector3(0, btScalar(-p.vertical_load_n), 0), false),
+		  test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * answer.collapse_factor, p.collapse_rate_rad_s, p.rate_window_s,
+				p.mechanism_rotation_rad, p.hold_s}),
+		  ledger(btVector3(0, 0, 0))
+	{
+	}
 
-	// loads: H at the left knee (the top end of the left column), V at mid-span (the end of the beam's left half)
-	btRigidBody& kneeBody = *columnLeft.segments().back();
-	btRigidBody& midBody = *beam.segments()[size_t(p.beam_segments / 2 - 1)];
-	ScaledLoad horizontal(kneeBody, btVector3(0, 0, btScalar(columnLeft.segmentLength_m() / 2)), btVector3(btScalar(p.horizontal_load_n), 0, 0), false);
-	ScaledLoad vertical(midBody, btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, btScalar(-p.vertical_load_n), 0), false);
-	CollapseTest test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * r.answer.collapse_factor, p.collapse_rate_rad_s,
-					   p.rate_window_s, p.mechanism_rotation_rad, p.hold_s});
-	plastic::EnergyLedger ledger(btVector3(0, 0, 0));
-	for (size_t i = 1; i + 1 < path.size(); i++) ledger.addBody(*path[i]);
+	static plastic::JointSpec baseOf(const plastic::Beam& columnRight, btScalar L)
+	{
+		plastic::JointSpec s = columnRight.jointSpecs().back();
+		s.pivot_m = btVector3(L, 0, 0);
+		return s;
+	}
 
-	rig.beforeEachStep([&](double step_s)
-					   {
-		test.advance(step_s);
-		for (ScaledLoad* load : {&horizontal, &vertical})
-		{
-			load->setFactor(test.factor());
-			load->apply();
-		}
-		columnLeft.updateForStep(step_s);
-		beam.updateForStep(step_s);
-		columnRight.updateForStep(step_s);
-		plastic::updateJointForStep(*base.constraint, baseSpec, step_s); });
-	rig.afterEachStep([&]
-					  {
-		horizontal.afterStep();
-		vertical.afterStep();
-		for (PlanarAngle& a : angles) a.update(); });
-	auto rotations = [&]
+	std::vector<double> rotations() const
 	{
 		std::vector<double> x;
 		for (size_t i = 0; i + 1 < angles.size(); i++) x.push_back(angles[i + 1].angle_rad() - angles[i].angle_rad());
 		return x;
-	};
-	while (rig.time_s() < p.duration_s - 1e-12)
-	{
-		rig.step();
-		const std::vector<double> now = rotations();
-		if (!std::all_of(now.begin(), now.end(), [](double x)
-						 { return std::isfinite(x); }))
-		{
-			r.finite = false;
-			break;
-		}
-		test.update(rig.time_s(), now);
-		if (test.done()) break;
 	}
-	r.rotations_rad = rotations();
-	r.collapse_factor = test.collapseFactor();
-	r.holds = test.holds();
-	r.mechanism_rotations_rad = test.mechanismRotations(r.rotations_rad);
-	r.mechanism_sites = test.mechanism(r.rotations_rad);
-	r.mechanism_matches = test.done() && r.mechanism_sites == r.answer.mechanism_sites;
+
+	PortalParameters p;
+	std::chrono::steady_clock::time_point start;
+	PortalAnswer answer;
+	StructureRig rig;
+	btScalar L, h;
+	plastic::Beam columnLeft, beam, columnRight;
+	plastic::JointSpec baseSpec;
+	plastic::Joint base;
+	ConstraintInWorld baseInWorld;
+	ScaledLoad horizontal, vertical;
+	CollapseTest test;
+	plastic::EnergyLedger ledger;
+	std::vector<const btRigidBody*> path;  // the bodies in order along the frame, the ground at both ends
+	std::vector<PlanarAngle> angles;
+	std::vector<const plastic::Joint*> joints;  // site i joins body i and body i + 1
+	std::vector<JointSite> sites;
+	bool finished = false;
+	bool finite = true;
+	bool ramp = true;               // ramp the load factor (collapse test) or hold it at p.load_factor
+	double max_rotation_rad = 0;    // the largest joint rotation seen
+	std::vector<double> atThird;    // the rotations a third into the run: what they change by after it is creep
+};
+
+PortalScene::PortalScene(const PortalParameters& p) : m(std::make_unique<State>(p))
+{
+	State& s = *m;
+	s.path = {nullptr};
+	for (const plastic::Beam* member : {&s.columnLeft, &s.beam, &s.columnRight})
+		for (btRigidBody* b : member->segments())
+		{
+			s.path.push_back(b);
+			b->setCollisionFlags(b->getCollisionFlags() | btCollisionObject::CF_NO_CONTACT_RESPONSE);
+		}
+	s.path.push_back(nullptr);
+	for (const btRigidBody* b : s.path) s.angles.emplace_back(b);
+	std::vector<btVector3> pivots;
+	for (const plastic::Beam* member : {&s.columnLeft, &s.beam, &s.columnRight})
+		for (size_t j = 0; j < member->joints().size(); j++)
+		{
+			s.joints.push_back(&member->joints()[j]);
+			pivots.push_back(member->jointSpecs()[j].pivot_m);
+		}
+	s.joints.push_back(&s.base);
+	pivots.push_back(s.baseSpec.pivot_m);
+	for (size_t i = 0; i < s.joints.size(); i++)
+	{
+		// site i joins path[i] and path[i + 1]; the last one (the right base) joins the last segment and the ground
+		const btRigidBody* a = s.path[i];
+		const btRigidBody* b = s.path[i + 1] ? s.path[i + 1] : s.path[i];
+		if (!s.path[i + 1]) a = nullptr;
+		s.sites.push_back(jointSite(*s.joints[i], a, *b, pivots[i]));
+	}
+	for (size_t i = 1; i + 1 < s.path.size(); i++) s.ledger.addBody(*s.path[i]);
+	s.ramp = p.ramp_rate_per_s > 0;
+	State* state = m.get();
+	s.rig.beforeEachStep([state](double step_s)
+						 {
+		if (state->ramp) state->test.advance(step_s);
+		for (ScaledLoad* load : {&state->horizontal, &state->vertical})
+		{
+			load->setFactor(state->ramp ? state->test.factor() : state->p.load_factor);
+			load->apply();
+		}
+		state->columnLeft.updateForStep(step_s);
+		state->beam.updateForStep(step_s);
+		state->columnRight.updateForStep(step_s);
+		plastic::updateJointForStep(*state->base.constraint, state->baseSpec, step_s); });
+	s.rig.afterEachStep([state]
+						{
+		state->horizontal.afterStep();
+		state->vertical.afterStep();
+		for (PlanarAngle& a : state->angles) a.update(); });
+}
+
+PortalScene::~PortalScene() = default;
+
+bool PortalScene::done() const { return m->finished || m->rig.time_s() >= m->p.duration_s - 1e-12; }
+double PortalScene::time_s() const { return m->rig.time_s(); }
+btDiscreteDynamicsWorld& PortalScene::world() { return m->rig.world(); }
+
+void PortalScene::step()
+{
+	State& s = *m;
+	if (done()) return;
+	s.rig.step();
+	const std::vector<double> now = s.rotations();
+	if (!std::all_of(now.begin(), now.end(), [](double x)
+					 { return std::isfinite(x); }))
+	{
+		s.finite = false;
+		s.finished = true;
+		return;
+	}
+	for (double x : now) s.max_rotation_rad = std::max(s.max_rotation_rad, std::fabs(x));
+	if (s.atThird.empty() && s.rig.time_s() >= s.p.duration_s / 3 - 1e-12) s.atThird = now;
+	if (!s.ramp) return;
+	s.test.update(s.rig.time_s(), now);
+	if (s.test.done()) s.finished = true;
+}
+
+PortalResult PortalScene::result() const
+{
+	const State& s = *m;
+	PortalResult r;
+	r.answer = s.answer;
+	const double mp = s.answer.plastic_moment_nm;
+	r.finite = s.finite;
+	r.rotations_rad = s.rotations();
+	r.max_rotation_rad = s.max_rotation_rad;
+	for (size_t i = 0; i < s.atThird.size(); i++) r.creep_rad = std::max(r.creep_rad, std::fabs(r.rotations_rad[i] - s.atThird[i]));
+	r.collapse_factor = s.test.collapseFactor();
+	r.holds = s.test.holds();
+	r.mechanism_rotations_rad = s.test.mechanismRotations(r.rotations_rad);
+	r.mechanism_sites = s.test.mechanism(r.rotations_rad);
+	r.mechanism_matches = s.test.done() && r.mechanism_sites == r.answer.mechanism_sites;
 	r.collapse_error_pct = 100.0 * (r.collapse_factor - r.answer.collapse_factor) / r.answer.collapse_factor;
-	r.load_work_j = horizontal.work_j() + vertical.work_j();
-	r.kinetic_j = ledger.measure().kinetic_j;
-	for (const plastic::Joint* j : joints) r.booked_plastic_work_j += j->plasticWork_j();
+	r.load_work_j = s.horizontal.work_j() + s.vertical.work_j();
+	r.kinetic_j = s.ledger.measure().kinetic_j;
+	for (const plastic::Joint* j : s.joints) r.booked_plastic_work_j += j->plasticWork_j();
 	for (double x : r.rotations_rad) r.geometric_plastic_work_j += mp * std::fabs(x);
-	r.steps = rig.steps();
-	r.simulated_s = rig.time_s();
-	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+	r.solver_fallbacks = s.rig.solverFallbacks();
+	r.solver_retries = s.rig.solverRetries();
+	r.steps = s.rig.steps();
+	r.simulated_s = s.rig.time_s();
+	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - s.start).count();
 	return r;
+}
+
+std::vector<JointView> PortalScene::joints() const
+{
+	const std::vector<double> rotations = m->rotations();
+	std::vector<JointView> views;
+	for (size_t i = 0; i < m->sites.size(); i++) views.push_back(jointView(m->sites[i], rotations[i]));
+	return views;
+}
+
+SceneLedger PortalScene::ledger() const
+{
+	const PortalResult r = result();
+	const PortalAnswer& a = r.answer;
+	SceneLedger l;
+	l.title = std::string("portal frame, ") + plastic::jointMethodName(m->p.solver.method);
+	l.time_s = r.simulated_s;
+	l.load_work_j = r.load_work_j;
+	l.kinetic_j = r.kinetic_j;
+	l.plastic_booked_j = r.booked_plastic_work_j;
+	l.plastic_measured_j = r.geometric_plastic_work_j;
+	char line[200];
+	std::snprintf(line, sizeof line, "analytic: beam %.3f, sway %.3f, combined %.3f", a.beam_factor, a.sway_factor, a.combined_factor);
+	l.answer.push_back(line);
+	std::snprintf(line, sizeof line, "collapse factor %.3f (%s)", a.collapse_factor, a.mechanism.c_str());
+	l.answer.push_back(line);
+	std::snprintf(line, sizeof line, "load factor %.3f", m->test.factor());
+	l.status.push_back(line);
+	if (std::isfinite(r.collapse_factor))
+	{
+		std::snprintf(line, sizeof line, "collapsed at %.3f (%+.2f %%), mechanism %s", r.collapse_factor, r.collapse_error_pct,
+					  r.mechanism_matches ? "as predicted" : "NOT as predicted");
+		l.status.push_back(line);
+	}
+	return l;
+}
+
+PortalResult runPortal(const PortalParameters& p)
+{
+	PortalScene scene(p);
+	while (!scene.done()) scene.step();
+	return scene.result();
 }
 }  // namespace structures

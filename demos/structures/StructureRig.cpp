@@ -26,26 +26,28 @@ void requireWhole(std::vector<std::string>& errors, const char* name, int value,
 std::vector<std::string> validateSolverSettings(const SolverSettings& s)
 {
 	std::vector<std::string> errors;
-	requireRange(errors, "dt", s.step_s, 1e-6, 0.05, "s");
-	requireWhole(errors, "iterations", s.iterations, 1, 100000);
+	requireRange(errors, "dt", s.world.internal_step_s, 1e-6, 0.05, "s");
+	requireWhole(errors, "iterations", s.world.iterations, 1, 100000);
+	requireRange(errors, "erp", s.world.erp, 1e-6, 1, "");
+	requireRange(errors, "mlcp-cfm", s.world.mlcp_cfm, 0, 1, "");
+	requireRange(errors, "mlcp-retry-cfm-factor", s.world.mlcp_retry_cfm_factor, 0, 1e6, "");
+	requireRange(errors, "mlcp-max-impulse", s.world.mlcp_max_impulse_ns, 1e-9, 1e30, "N s");
 	return errors;
 }
 
-StructureRig::StructureRig(const SolverSettings& settings) : m_settings(settings)
+StructureRig::StructureRig(const SolverSettings& settings) : m_settings(settings), m_world(settings.world)
 {
-	m_world.setGravity(btVector3(0, 0, 0));
-	m_world.getSolverInfo().m_numIterations = settings.iterations;
-	m_world.addRigidBody(&m_ground, 0, 0);
+	world().addRigidBody(&m_ground, 0, 0);
 }
 
-StructureRig::~StructureRig() { m_world.removeRigidBody(&m_ground); }
+StructureRig::~StructureRig() { world().removeRigidBody(&m_ground); }
 
 void StructureRig::step()
 {
-	for (auto& f : m_before) f(m_settings.step_s);
-	m_world.stepSimulation(btScalar(m_settings.step_s), 0);
+	for (auto& f : m_before) f(step_s());
+	m_world.stepOnce();
 	for (auto& f : m_after) f();
-	m_time_s += m_settings.step_s;
+	m_time_s += step_s();
 	m_steps++;
 }
 }  // namespace structures

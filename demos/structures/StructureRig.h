@@ -1,22 +1,23 @@
-// The world every structures scene runs in: a sequential-impulse world without gravity (the textbook answers
-// are for the applied loads alone), a static ground that supports are fixed to (it collides with nothing), the
-// solver settings, and the internal step loop. Loads and joints that need something before or after each
-// internal step register callbacks.
+// The world every structures scene runs in: the toolkit's plastic::StructureWorld (its solver settings: by default
+// btMLCPSolver + Dantzig, 10 iterations, 1/240 s; zero gravity, the textbook answers are for the applied loads
+// alone), a static ground that supports are fixed to (it collides with nothing), and the internal step loop. Loads
+// and joints that need something before or after each internal step register callbacks.
 #pragma once
 
 #include <functional>
 #include <vector>
 
 #include "JointFactory.h"
+#include "SolverSettings.h"
 
 namespace structures
 {
-// How a scene is solved: the joint method of every plastic joint, the internal step and the iterations.
+// How a scene is solved: the joint method of every plastic joint, and the world's solver settings (solver kind,
+// iterations, internal step, ERP) as the toolkit defines them.
 struct SolverSettings
 {
 	plastic::JointMethod method = plastic::JointMethod::PlasticHinge;
-	double step_s = 1e-3;
-	int iterations = 1000;
+	plastic::WorldSolverSettings world;
 };
 
 // "name: value is not in [low, high] unit" into errors when value is outside the range (or not finite)
@@ -54,24 +55,25 @@ public:
 	StructureRig(const StructureRig&) = delete;
 	StructureRig& operator=(const StructureRig&) = delete;
 
-	btDiscreteDynamicsWorld& world() { return m_world; }
+	btDiscreteDynamicsWorld& world() { return m_world.world(); }
 	btRigidBody& ground() { return m_ground; }
 	const SolverSettings& settings() const { return m_settings; }
+	double step_s() const { return m_settings.world.internal_step_s; }
 	double time_s() const { return m_time_s; }
 	long steps() const { return m_steps; }
+	// internal steps in which btMLCPSolver's direct solve failed and it used sequential impulse instead (0 for SI)
+	int solverFallbacks() const { return m_world.solverFallbacks(); }
+	// internal steps in which the direct solve was tried again with a larger CFM (and then did not fall back unless counted above)
+	int solverRetries() const { return m_world.solverRetries(); }
 
 	void beforeEachStep(std::function<void(double step_s)> callback) { m_before.push_back(std::move(callback)); }
 	void afterEachStep(std::function<void()> callback) { m_after.push_back(std::move(callback)); }
-	// one internal step of settings().step_s
+	// one internal step of step_s()
 	void step();
 
 private:
 	SolverSettings m_settings;
-	btDefaultCollisionConfiguration m_configuration;
-	btCollisionDispatcher m_dispatcher{&m_configuration};
-	btDbvtBroadphase m_broadphase;
-	btSequentialImpulseConstraintSolver m_solver;
-	btDiscreteDynamicsWorld m_world{&m_dispatcher, &m_broadphase, &m_solver, &m_configuration};
+	plastic::StructureWorld m_world;
 	btBoxShape m_groundShape{btVector3(0.01, 0.01, 0.01)};
 	btRigidBody m_ground{btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &m_groundShape)};
 	std::vector<std::function<void(double)>> m_before;

@@ -81,12 +81,29 @@ Flags<P> commonFlags()
 	f["method"] = {[](P& p, const std::string& t)
 				   { return parseMethod(t, p.solver.method); },
 				   "NAME  joint method: hinge-motor, plastic-hinge, elastic-plastic, elastic-plastic2; default plastic-hinge"};
+	f["solver"] = {[](P& p, const std::string& t)
+				   { return plastic::parseSolverKind(t, p.solver.world.solver); },
+				   "NAME  constraint solver: dantzig (btMLCPSolver + btDantzigSolver, a direct solve; the toolkit default), "
+				   "sequential-impulse (upstream's btSequentialImpulseConstraintSolver), pgs (btMLCPSolver + projected Gauss-Seidel)"};
 	f["dt"] = {[](P& p, const std::string& t)
-			   { return parseNumber(t, p.solver.step_s); },
-			   "SECONDS  internal step, default 1e-3"};
+			   { return parseNumber(t, p.solver.world.internal_step_s); },
+			   "SECONDS  internal step, default 1/240 (four per 60 Hz frame)"};
 	f["iterations"] = {[](P& p, const std::string& t)
-					   { return parseInteger(t, p.solver.iterations); },
-					   "N  solver iterations, default 1000"};
+					   { return parseInteger(t, p.solver.world.iterations); },
+					   "N  solver iterations, default 10 (sequential impulse and pgs; dantzig uses them only in a step where its direct solve fails)"};
+	f["mlcp-cfm"] = {[](P& p, const std::string& t)
+					 { return parseNumber(t, p.solver.world.mlcp_cfm); },
+					 "VALUE  dantzig, pgs: constraint force mixing of the direct solve only (cfm / dt on its matrix' diagonal), default 1e-8; 0: upstream "
+					 "(closed loops' redundant rows then make Dantzig fail and fall back to sequential impulse)"};
+	f["mlcp-retry-cfm-factor"] = {[](P& p, const std::string& t)
+								  { return parseNumber(t, p.solver.world.mlcp_retry_cfm_factor); },
+								  "FACTOR  dantzig: a step whose direct solve fails is solved again with this times --mlcp-cfm before it falls back to sequential impulse, default 10; <= 1: no retry"};
+	f["mlcp-max-impulse"] = {[](P& p, const std::string& t)
+							 { return parseNumber(t, p.solver.world.mlcp_max_impulse_ns); },
+							 "N_S  dantzig: a solution with a larger impulse is rejected and the step falls back to sequential impulse, default 1000 (upstream)"};
+	f["erp"] = {[](P& p, const std::string& t)
+				{ return parseNumber(t, p.solver.world.erp); },
+				"FRACTION  the joints' error reduction parameter, default 0.2 (Bullet's)"};
 	f["section-width"] = number(&P::section_width_m, "M  rectangle along the bending axis, default 0.05");
 	f["section-depth"] = number(&P::section_depth_m, "M  rectangle in the bending plane, default 0.1");
 	f["fy"] = number(&P::yield_stress_pa, "PA  yield stress, default 400e6 (Mp = fy b d^2 / 4 = 50 kN m)");
@@ -130,7 +147,8 @@ const Flags<PortalParameters>& portalFlags()
 	{
 		using P = PortalParameters;
 		Flags<P> f = commonFlags<P>();
-		addRampFlags(f, "1/S  load factor rate from --slow-from on, default 0.02");
+		addRampFlags(f, "1/S  load factor rate from --slow-from on, default 0.02; 0: constant --load-factor");
+		f["load-factor"] = number(&P::load_factor, "LAMBDA  constant load factor when --ramp-rate=0, default 0.9");
 		f["span"] = number(&P::span_m, "M  L, default 4");
 		f["height"] = number(&P::height_m, "M  h, default 3");
 		f["column-segments"] = whole(&P::column_segments, "N  default 2");

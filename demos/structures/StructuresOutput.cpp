@@ -50,7 +50,7 @@ private:
 Json solverJson(const char* scene, const SolverSettings& s)
 {
 	Json j;
-	j.add("scene", std::string(scene)).add("method", std::string(plastic::jointMethodName(s.method))).add("dt", s.step_s).add("iterations", long(s.iterations));
+	j.add("scene", std::string(scene)).add("method", std::string(plastic::jointMethodName(s.method))).add("solver", std::string(plastic::solverKindName(s.world.solver))).add("dt", s.world.internal_step_s).add("iterations", long(s.world.iterations)).add("erp", s.world.erp).add("mlcp_cfm", s.world.mlcp_cfm).add("mlcp_retry_cfm_factor", s.world.mlcp_retry_cfm_factor).add("mlcp_max_impulse_Ns", s.world.mlcp_max_impulse_ns);
 	return j;
 }
 
@@ -74,7 +74,7 @@ std::string toJson(const CantileverParameters& p, const CantileverResult& r)
 	Json j = solverJson("cantilever", p.solver);
 	std::vector<std::string> mechanism;
 	for (int i : r.mechanism) mechanism.push_back(i == 0 ? "root" : "inner-" + std::to_string(i));
-	j.add("follower", p.follower_load).add("ramp", p.ramp_rate_per_s > 0).add("load_ratio", p.load_ratio).add("plastic_moment_Nm", r.answer.plastic_moment_nm).add("analytic_collapse_load_N", r.answer.collapse_load_n).add("collapse_ratio", r.collapse_ratio).add("collapse_error_pct", 100 * (r.collapse_ratio - r.answer.collapse_ratio) / r.answer.collapse_ratio).add("holds", long(r.holds)).add("mechanism", mechanism).add("analytic_stop_rotation_rad", r.answer.stop_rotation_rad).add("stop_rotation_rad", r.stop_rotation_rad).add("stop_error_pct", 100 * (r.stop_rotation_rad - r.answer.stop_rotation_rad) / r.answer.stop_rotation_rad).add("root_rotation_rad", r.root_rotation_rad).add("max_root_rotation_rad", r.max_root_rotation_rad).add("max_inner_rotation_rad", r.max_inner_rotation_rad).add("load_work_J", r.load_work_j).add("kinetic_J", r.kinetic_j).add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j).add("energy_balance_error_pct", r.energy_balance_error_pct).add("steps", r.steps).add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
+	j.add("follower", p.follower_load).add("ramp", p.ramp_rate_per_s > 0).add("load_ratio", p.load_ratio).add("plastic_moment_Nm", r.answer.plastic_moment_nm).add("analytic_collapse_load_N", r.answer.collapse_load_n).add("collapse_ratio", r.collapse_ratio).add("collapse_error_pct", 100 * (r.collapse_ratio - r.answer.collapse_ratio) / r.answer.collapse_ratio).add("holds", long(r.holds)).add("mechanism", mechanism).add("analytic_stop_rotation_rad", r.answer.stop_rotation_rad).add("stop_rotation_rad", r.stop_rotation_rad).add("stop_error_pct", 100 * (r.stop_rotation_rad - r.answer.stop_rotation_rad) / r.answer.stop_rotation_rad).add("root_rotation_rad", r.root_rotation_rad).add("max_root_rotation_rad", r.max_root_rotation_rad).add("max_inner_rotation_rad", r.max_inner_rotation_rad).add("creep_rad", r.creep_rad).add("load_work_J", r.load_work_j).add("kinetic_J", r.kinetic_j).add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j).add("energy_balance_error_pct", r.energy_balance_error_pct).add("solver_retries", long(r.solver_retries)).add("solver_fallbacks", long(r.solver_fallbacks)).add("steps", r.steps).add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
 	return j.str();
 }
 
@@ -84,7 +84,7 @@ std::string toJson(const PortalParameters& p, const PortalResult& r)
 	const PortalAnswer& a = r.answer;
 	std::vector<std::string> sites;
 	for (const PortalJointSite& s : a.sites) sites.push_back(s.name);
-	j.add("horizontal_load_N", p.horizontal_load_n).add("vertical_load_N", p.vertical_load_n).add("plastic_moment_Nm", a.plastic_moment_nm).add("beam_factor", a.beam_factor).add("sway_factor", a.sway_factor).add("combined_factor", a.combined_factor).add("analytic_collapse_factor", a.collapse_factor).add("analytic_mechanism", a.mechanism).add("analytic_hinges", siteNames(a, a.mechanism_sites)).add("collapse_factor", r.collapse_factor).add("collapse_error_pct", r.collapse_error_pct).add("holds", long(r.holds)).add("hinges", siteNames(a, r.mechanism_sites)).add("mechanism_matches", r.mechanism_matches).add("sites", sites).add("analytic_mechanism_rotations", a.mechanism_rotations).add("mechanism_rotations_rad", r.mechanism_rotations_rad).add("rotations_rad", r.rotations_rad).add("load_work_J", r.load_work_j).add("kinetic_J", r.kinetic_j).add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j).add("steps", r.steps).add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
+	j.add("ramp", p.ramp_rate_per_s > 0).add("load_factor", p.load_factor).add("horizontal_load_N", p.horizontal_load_n).add("vertical_load_N", p.vertical_load_n).add("plastic_moment_Nm", a.plastic_moment_nm).add("beam_factor", a.beam_factor).add("sway_factor", a.sway_factor).add("combined_factor", a.combined_factor).add("analytic_collapse_factor", a.collapse_factor).add("analytic_mechanism", a.mechanism).add("analytic_hinges", siteNames(a, a.mechanism_sites)).add("collapse_factor", r.collapse_factor).add("collapse_error_pct", r.collapse_error_pct).add("holds", long(r.holds)).add("hinges", siteNames(a, r.mechanism_sites)).add("mechanism_matches", r.mechanism_matches).add("sites", sites).add("analytic_mechanism_rotations", a.mechanism_rotations).add("mechanism_rotations_rad", r.mechanism_rotations_rad).add("rotations_rad", r.rotations_rad).add("max_rotation_rad", r.max_rotation_rad).add("creep_rad", r.creep_rad).add("load_work_J", r.load_work_j).add("kinetic_J", r.kinetic_j).add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j).add("solver_retries", long(r.solver_retries)).add("solver_fallbacks", long(r.solver_fallbacks)).add("steps", r.steps).add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
 	return j.str();
 }
 
@@ -92,15 +92,15 @@ std::string toJson(const DropWeightParameters& p, const DropWeightResult& r)
 {
 	Json j = solverJson("drop-weight", p.solver);
 	const DropWeightAnswer& a = r.answer;
-	j.add("clamped", p.clamped).add("plastic_moment_Nm", a.plastic_moment_nm).add("beam_mass_kg", a.beam_mass_kg).add("effective_mass_kg", a.effective_mass_kg).add("initial_kinetic_J", a.initial_kinetic_j).add("analytic_kinetic_after_impact_J", a.kinetic_after_impact_j).add("kinetic_after_impact_J", r.kinetic_after_impact_j).add("analytic_midspan_rotation_rad", a.midspan_rotation_rad).add("midspan_rotation_rad", r.midspan_rotation_rad).add("midspan_error_pct", r.midspan_error_pct).add("analytic_support_rotation_rad", a.support_rotation_rad).add("left_support_rotation_rad", r.left_support_rotation_rad).add("right_support_rotation_rad", r.right_support_rotation_rad).add("max_inner_rotation_rad", r.max_inner_rotation_rad).add("kinetic_end_J", r.kinetic_end_j).add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j).add("plastic_work_error_pct", r.plastic_work_error_pct).add("balance_error_pct", r.balance_error_pct).add("steps", r.steps).add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
+	j.add("clamped", p.clamped).add("plastic_moment_Nm", a.plastic_moment_nm).add("beam_mass_kg", a.beam_mass_kg).add("effective_mass_kg", a.effective_mass_kg).add("initial_kinetic_J", a.initial_kinetic_j).add("analytic_kinetic_after_impact_J", a.kinetic_after_impact_j).add("kinetic_after_impact_J", r.kinetic_after_impact_j).add("analytic_midspan_rotation_rad", a.midspan_rotation_rad).add("midspan_rotation_rad", r.midspan_rotation_rad).add("midspan_error_pct", r.midspan_error_pct).add("analytic_support_rotation_rad", a.support_rotation_rad).add("left_support_rotation_rad", r.left_support_rotation_rad).add("right_support_rotation_rad", r.right_support_rotation_rad).add("max_inner_rotation_rad", r.max_inner_rotation_rad).add("kinetic_end_J", r.kinetic_end_j).add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j).add("plastic_work_error_pct", r.plastic_work_error_pct).add("balance_error_pct", r.balance_error_pct).add("solver_retries", long(r.solver_retries)).add("solver_fallbacks", long(r.solver_fallbacks)).add("steps", r.steps).add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
 	return j.str();
 }
 
 std::string toSummary(const CantileverParameters& p, const CantileverResult& r)
 {
 	std::ostringstream out;
-	out << "cantilever, " << plastic::jointMethodName(p.solver.method) << ", dt " << p.solver.step_s << " s, " << p.solver.iterations
-		<< " iterations: " << r.steps << " steps (" << r.simulated_s << " s simulated) in " << r.wall_s << " s\n";
+	out << "cantilever, " << plastic::jointMethodName(p.solver.method) << ", " << plastic::solverKindName(p.solver.world.solver) << ", dt " << p.solver.world.internal_step_s << " s, " << p.solver.world.iterations
+		<< " iterations: " << r.steps << " steps (" << r.simulated_s << " s simulated, " << r.solver_fallbacks << " solver fallbacks) in " << r.wall_s << " s\n";
 	out << "  Mp " << r.answer.plastic_moment_nm << " N m, analytic collapse load Mp / L = " << r.answer.collapse_load_n << " N\n";
 	if (p.ramp_rate_per_s > 0)
 		out << "  collapse seen at P L / Mp = " << r.collapse_ratio << " (analytic 1), joints in the mechanism: " << r.mechanism.size()
@@ -118,12 +118,16 @@ std::string toSummary(const PortalParameters& p, const PortalResult& r)
 {
 	std::ostringstream out;
 	const PortalAnswer& a = r.answer;
-	out << "portal frame, " << plastic::jointMethodName(p.solver.method) << ", dt " << p.solver.step_s << " s, " << p.solver.iterations
-		<< " iterations: " << r.steps << " steps (" << r.simulated_s << " s simulated) in " << r.wall_s << " s\n";
+	out << "portal frame, " << plastic::jointMethodName(p.solver.method) << ", " << plastic::solverKindName(p.solver.world.solver) << ", dt " << p.solver.world.internal_step_s << " s, " << p.solver.world.iterations
+		<< " iterations: " << r.steps << " steps (" << r.simulated_s << " s simulated, " << r.solver_fallbacks << " solver fallbacks) in " << r.wall_s << " s\n";
 	out << "  plastic analysis: beam " << a.beam_factor << ", sway " << a.sway_factor << ", combined " << a.combined_factor << " -> collapse factor "
 		<< a.collapse_factor << " (" << a.mechanism << ": " << joinNames(siteNames(a, a.mechanism_sites)) << ")\n";
-	out << "  simulated: collapse factor " << r.collapse_factor << " (" << r.collapse_error_pct << " %), hinges "
-		<< joinNames(siteNames(a, r.mechanism_sites)) << (r.mechanism_matches ? " (as predicted)" : " (NOT as predicted)") << "\n";
+	if (p.ramp_rate_per_s > 0)
+		out << "  simulated: collapse factor " << r.collapse_factor << " (" << r.collapse_error_pct << " %), hinges "
+			<< joinNames(siteNames(a, r.mechanism_sites)) << (r.mechanism_matches ? " (as predicted)" : " (NOT as predicted)") << "\n";
+	else
+		out << "  load factor held at " << p.load_factor << ": largest site rotation " << r.max_rotation_rad << " rad, creep over the last two thirds "
+			<< r.creep_rad << " rad\n";
 	out << "  load work " << r.load_work_j << " J, kinetic " << r.kinetic_j << " J, Mp x rotations " << r.geometric_plastic_work_j
 		<< " J, booked plastic work " << r.booked_plastic_work_j << " J\n";
 	return out.str();
@@ -133,8 +137,8 @@ std::string toSummary(const DropWeightParameters& p, const DropWeightResult& r)
 {
 	std::ostringstream out;
 	const DropWeightAnswer& a = r.answer;
-	out << "drop weight on a " << (p.clamped ? "clamped" : "simply supported") << " beam, " << plastic::jointMethodName(p.solver.method) << ", dt "
-		<< p.solver.step_s << " s, " << p.solver.iterations << " iterations: " << r.steps << " steps (" << r.simulated_s << " s simulated) in "
+	out << "drop weight on a " << (p.clamped ? "clamped" : "simply supported") << " beam, " << plastic::jointMethodName(p.solver.method) << ", " << plastic::solverKindName(p.solver.world.solver) << ", dt "
+		<< p.solver.world.internal_step_s << " s, " << p.solver.world.iterations << " iterations: " << r.steps << " steps (" << r.simulated_s << " s simulated, " << r.solver_fallbacks << " solver fallbacks) in "
 		<< r.wall_s << " s\n";
 	out << "  ball " << a.initial_kinetic_j << " J; kinetic energy after the impact " << r.kinetic_after_impact_j << " J (estimate "
 		<< a.kinetic_after_impact_j << " J)\n";

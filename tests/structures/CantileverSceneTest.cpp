@@ -15,8 +15,9 @@ CantileverParameters converged(plastic::JointMethod method = plastic::JointMetho
 {
 	CantileverParameters p;
 	p.solver.method = method;
-	p.solver.step_s = 1e-3;
-	p.solver.iterations = 200;
+	p.solver.world.internal_step_s = 1e-3;
+	p.solver.world.solver = plastic::SolverKind::SequentialImpulse;  // the converged reference: upstream's solver
+	p.solver.world.iterations = 200;
 	return p;
 }
 }  // namespace
@@ -79,7 +80,7 @@ TEST(CantileverScene, DeadLoadStopsWhereTheLoadsWorkEqualsThePlasticWork)
 	for (double ratio : {1.5, 1.2})
 	{
 		CantileverParameters p = converged();
-		p.solver.iterations = 1000;
+		p.solver.world.iterations = 1000;
 		p.load_ratio = ratio;
 		const CantileverResult r = runCantilever(p);
 		EXPECT_NEAR(r.stop_rotation_rad, r.answer.stop_rotation_rad, 0.002 * r.answer.stop_rotation_rad) << ratio;

@@ -16,8 +16,9 @@ DropWeightParameters converged(bool clamped)
 {
 	DropWeightParameters p;
 	p.clamped = clamped;
-	p.solver.step_s = 1e-4;
-	p.solver.iterations = 1000;
+	p.solver.world.internal_step_s = 1e-4;
+	p.solver.world.solver = plastic::SolverKind::SequentialImpulse;  // the converged reference: upstream's solver
+	p.solver.world.iterations = 1000;
 	return p;
 }
 }  // namespace

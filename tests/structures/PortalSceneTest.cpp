@@ -14,8 +14,9 @@ PortalParameters converged(plastic::JointMethod method = plastic::JointMethod::P
 {
 	PortalParameters p;
 	p.solver.method = method;
-	p.solver.step_s = 1e-3;
-	p.solver.iterations = 200;
+	p.solver.world.internal_step_s = 1e-3;
+	p.solver.world.solver = plastic::SolverKind::SequentialImpulse;  // the converged reference: upstream's solver
+	p.solver.world.iterations = 200;
 	return p;
 }
 

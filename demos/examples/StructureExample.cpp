@@ -1,0 +1,176 @@
+// One example class for every scene of SceneControls: sliders and a method choice build the scene, the browser's clock
+// steps it (time scale: simulated seconds per browser second), the browser draws its world.
+#include "StructureExample.h"
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "CommonInterfaces/CommonExampleInterface.h"
+#include "CommonInterfaces/CommonGUIHelperInterface.h"
+#include "CommonInterfaces/CommonGraphicsAppInterface.h"
+#include "CommonInterfaces/CommonParameterInterface.h"
+#include "CommonInterfaces/CommonRenderInterface.h"
+
+#include "SceneControls.h"
+#include "StructureView.h"
+#include "WreckingBallControls.h"
+
+namespace
+{
+const plastic::JointMethod kMethods[] = {plastic::JointMethod::HingeMotor, plastic::JointMethod::PlasticHinge, plastic::JointMethod::ElasticPlastic,
+										 plastic::JointMethod::ElasticPlastic2};
+const char* kMethodNames[] = {"hinge-motor", "plastic-hinge", "elastic-plastic", "elastic-plastic2"};
+
+class StructureExample : public CommonExampleInterface
+{
+public:
+	StructureExample(GUIHelperInterface* guiHelper, structures::ControlledScene kind, int methodNumber)
+		: m_guiHelper(guiHelper), m_kind(std::move(kind)), m_timeScale(m_kind.time_scale)
+	{
+		const std::vector<float> initial = structures::initialValues(m_kind);
+		m_sliderValues.assign(initial.begin(), initial.end());  // fixed size from here on: the sliders point into it
+		m_method = methodNumber >= 1 && methodNumber <= 4 ? kMethods[methodNumber - 1] : m_kind.method;
+	}
+
+	void initPhysics() override
+	{
+		m_guiHelper->setUpAxis(1);
+		registerControls();
+		rebuild();
+	}
+
+	void exitPhysics() override
+	{
+		m_guiHelper->removeAllGraphicsInstances();
+		m_scene.reset();
+	}
+
+	void stepSimulation(float deltaTime_s) override
+	{
+		if (values() != m_applied || m_method != m_appliedMethod) rebuild();
+		if (!m_scene) return;
+		m_targetTime_s += double(deltaTime_s) * double(m_timeScale);
+		while (m_scene->time_s() < m_targetTime_s - 1e-6 && !m_scene->done()) m_scene->step();
+	}
+
+	void renderScene() override
+	{
+		if (m_scene)
+		{
+			colourStructure(m_guiHelper, *m_scene);
+			m_guiHelper->syncPhysicsToGraphics(&m_scene->world());
+			m_guiHelper->render(&m_scene->world());
+			drawJointMarkers(m_guiHelper, *m_scene);
+		}
+		if (CommonGraphicsApp* app = m_guiHelper->getAppInterface())
+			drawStructurePanel(app, m_scene ? structures::ledgerText(m_scene->ledger()) : m_kind.name + ": invalid parameters:\n" + m_error);
+	}
+
+	void physicsDebugDraw(int debugFlags) override
+	{
+		if (m_scene && m_scene->world().getDebugDrawer())
+		{
+			m_scene->world().getDebugDrawer()->setDebugMode(debugFlags);
+			m_scene->world().debugDrawWorld();
+		}
+	}
+
+	void resetCamera() override
+	{
+		m_guiHelper->resetCamera(m_kind.camera_distance_m, m_kind.camera_yaw_deg, m_kind.camera_pitch_deg, m_kind.camera_target_m[0], m_kind.camera_target_m[1],
+								 m_kind.camera_target_m[2]);
+	}
+
+	bool mouseMoveCallback(float, float) override { return false; }
+	bool mouseButtonCallback(int, int, float, float) override { return false; }
+	bool keyboardCallback(int, int) override { return false; }
+
+private:
+	std::vector<float> values() const { return std::vector<float>(m_sliderValues.begin(), m_sliderValues.end()); }
+
+	void registerControls()
+	{
+		CommonParameterInterface* parameters = m_guiHelper->getParameterInterface();
+		if (!parameters) return;
+		ComboBoxParams combo;
+		combo.m_numItems = 4;
+		combo.m_items = kMethodNames;
+		combo.m_startItem = 0;
+		for (int i = 0; i < 4; i++)
+			if (kMethods[i] == m_method) combo.m_startItem = i;
+		combo.m_userPointer = this;
+		combo.m_callback = [](int item, const char*, void* self)
+		{
+			if (item >= 0 && item < 4) static_cast<StructureExample*>(self)->m_method = kMethods[item];
+		};
+		parameters->registerComboBox(combo);
+		for (size_t i = 0; i < m_kind.sliders.size(); i++)
+		{
+			const structures::SliderSpec& s = m_kind.sliders[i];
+			SliderParams params(s.label, &m_sliderValues[i]);
+			params.m_minVal = s.min;
+			params.m_maxVal = s.max;
+			params.m_clampToIntegers = s.integers;
+			parameters->registerSliderFloatParameter(params);
+		}
+		SliderParams pace("time scale (sim s per s)", &m_timeScale);
+		pace.m_minVal = 0.01f;
+		pace.m_maxVal = 4;
+		parameters->registerSliderFloatParameter(pace);
+	}
+
+	void rebuild()
+	{
+		m_applied = values();
+		m_appliedMethod = m_method;
+		m_guiHelper->removeAllGraphicsInstances();
+		m_scene.reset();
+		m_error.clear();
+		m_targetTime_s = 0;
+		try
+		{
+			m_scene = m_kind.build(m_applied, m_method);
+		}
+		catch (const std::invalid_argument& e)
+		{
+			m_error = e.what();  // shown on screen; nothing is simulated
+			return;
+		}
+		showStructure(m_guiHelper, *m_scene);
+		resetCamera();
+	}
+
+	GUIHelperInterface* m_guiHelper;
+	structures::ControlledScene m_kind;
+	std::vector<btScalar> m_sliderValues;  // what the sliders say (their own storage)
+	std::vector<float> m_applied;          // what the scene was built from
+	plastic::JointMethod m_method = plastic::JointMethod::PlasticHinge;
+	plastic::JointMethod m_appliedMethod = plastic::JointMethod::PlasticHinge;
+	btScalar m_timeScale;
+	std::unique_ptr<structures::SteppedScene> m_scene;
+	std::string m_error;
+	double m_targetTime_s = 0;
+};
+}  // namespace
+
+CommonExampleInterface* CantileverExampleCreateFunc(CommonExampleOptions& options)
+{
+	return new StructureExample(options.m_guiHelper, structures::cantileverControls(), options.m_option);
+}
+
+CommonExampleInterface* PortalExampleCreateFunc(CommonExampleOptions& options)
+{
+	return new StructureExample(options.m_guiHelper, structures::portalControls(), options.m_option);
+}
+
+CommonExampleInterface* DropWeightExampleCreateFunc(CommonExampleOptions& options)
+{
+	return new StructureExample(options.m_guiHelper, structures::dropWeightControls(), options.m_option);
+}
+
+CommonExampleInterface* WreckingBallExampleCreateFunc(CommonExampleOptions& options)
+{
+	return new StructureExample(options.m_guiHelper, game::wreckingBallControls(), options.m_option);
+}

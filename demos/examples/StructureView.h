@@ -1,0 +1,38 @@
+// How a structure scene is shown: the colour of each body by the state of the joints at its ends (elastic, yielded,
+// broken), a marker at every joint pivot in the same colours, the ledger as text. Reads the scene; changes nothing.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "SteppedScene.h"
+
+struct GUIHelperInterface;
+struct CommonGraphicsApp;
+
+enum class JointColour
+{
+	Elastic,
+	Yielded,
+	Broken,
+};
+
+// RGBA of a body whose worst joint is in that state, and of a joint marker
+extern const float kSteelRgba[4];
+extern const float kYieldedRgba[4];
+extern const float kBrokenRgba[4];
+extern const float kElasticMarkerRgba[4];
+extern const float kOtherBodyRgba[4];   // moving bodies without plastic joints (ball, chain, carriage)
+extern const float kStaticBodyRgba[4];  // ground, supports
+
+// the worst state of the joints at each body's ends
+std::map<const btRigidBody*, JointColour> bodyStates(const std::vector<structures::JointView>& joints);
+
+// graphics objects for every body of the world (replacing any there were), coloured as they stand now
+void showStructure(GUIHelperInterface* guiHelper, structures::SteppedScene& scene);
+// recolour the bodies (before the world is synced and rendered)
+void colourStructure(GUIHelperInterface* guiHelper, structures::SteppedScene& scene);
+// a point at every joint pivot in its state's colour, 0.15 m towards +z (after the world is rendered)
+void drawJointMarkers(GUIHelperInterface* guiHelper, structures::SteppedScene& scene);
+// text lines from (left_px, top_px); the default clears the browser's explorer panel
+void drawStructurePanel(CommonGraphicsApp* app, const std::string& text, int left_px = 255, int top_px = 45);

@@ -1,0 +1,176 @@
+#include "WreckingBallCommandLine.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <functional>
+#include <map>
+
+namespace game
+{
+namespace
+{
+bool parseNumber(const std::string& text, double& value)
+{
+	if (text.empty()) return false;
+	char* end = nullptr;
+	errno = 0;
+	value = std::strtod(text.c_str(), &end);
+	return end == text.c_str() + text.size() && errno == 0;
+}
+
+bool parseInteger(const std::string& text, int& value)
+{
+	double d;
+	if (!parseNumber(text, d) || d != static_cast<double>(static_cast<long long>(d)) || d < -1e9 || d > 1e9) return false;
+	value = static_cast<int>(d);
+	return true;
+}
+
+struct Flag
+{
+	std::function<bool(WreckingBallParameters&, const std::string&)> set;
+	std::string help;
+};
+
+Flag number(double WreckingBallParameters::*field, const char* help)
+{
+	return {[field](WreckingBallParameters& p, const std::string& t)
+			{ return parseNumber(t, p.*field); },
+			help};
+}
+
+Flag whole(int WreckingBallParameters::*field, const char* help)
+{
+	return {[field](WreckingBallParameters& p, const std::string& t)
+			{ return parseInteger(t, p.*field); },
+			help};
+}
+
+const std::map<std::string, Flag>& flags()
+{
+	using P = WreckingBallParameters;
+	static const std::map<std::string, Flag> f = {
+		{"method", {[](P& p, const std::string& t)
+					{
+						for (plastic::JointMethod m : {plastic::JointMethod::HingeMotor, plastic::JointMethod::PlasticHinge, plastic::JointMethod::ElasticPlastic,
+													   plastic::JointMethod::ElasticPlastic2})
+							if (t == plastic::jointMethodName(m))
+							{
+								p.method = m;
+								return true;
+							}
+						return false;
+					},
+					"NAME  joint method: hinge-motor, plastic-hinge, elastic-plastic, elastic-plastic2; default plastic-hinge"}},
+		{"solver", {[](P& p, const std::string& t)
+					{
+						if (t == "dantzig")
+							p.solver.solver = plastic::SolverKind::MlcpDantzig;
+						else if (t == "pgs")
+							p.solver.solver = plastic::SolverKind::MlcpProjectedGaussSeidel;
+						else if (t == "sequential-impulse")
+							p.solver.solver = plastic::SolverKind::SequentialImpulse;
+						else
+							return false;
+						return true;
+					},
+					"NAME  dantzig (toolkit default: MLCP, direct), pgs (MLCP, projected Gauss-Seidel), sequential-impulse (upstream)"}},
+		{"internal-step", {[](P& p, const std::string& t)
+						   { return parseNumber(t, p.solver.internal_step_s); },
+						   "SECONDS  fixed internal step, default 1/240"}},
+		{"iterations", {[](P& p, const std::string& t)
+						{ return parseInteger(t, p.solver.iterations); },
+						"N  solver iterations, default 10"}},
+		{"cfm", {[](P& p, const std::string& t)
+				 { return parseNumber(t, p.solver.mlcp_cfm); },
+				 "VALUE  the solver's global CFM (regularises the frame's closed loop for the direct solve), default 1e-7"}},
+		{"frame-rate", number(&P::frame_rate_hz, "HZ  frames per second, default 60")},
+		{"duration", number(&P::duration_s, "SECONDS  simulated, default 3")},
+		{"gravity", number(&P::gravity_m_s2, "M_S2  default 9.81")},
+		{"span", number(&P::span_m, "M  default 4")},
+		{"height", number(&P::height_m, "M  default 3")},
+		{"column-segments", whole(&P::column_segments, "N  default 4")},
+		{"beam-segments", whole(&P::beam_segments, "N  default 4")},
+		{"section-depth", number(&P::section_depth_m, "M  I section depth, default 0.2")},
+		{"flange-width", number(&P::flange_width_m, "M  default 0.1")},
+		{"web-thickness", number(&P::web_thickness_m, "M  default 0.0056")},
+		{"flange-thickness", number(&P::flange_thickness_m, "M  default 0.0085")},
+		{"fy", number(&P::yield_stress_pa, "PA  yield stress, default 355e6 (Mp = 74.4 kN m)")},
+		{"youngs-modulus", number(&P::youngs_modulus_pa, "PA  default 210e9")},
+		{"density", number(&P::density_kg_m3, "KG_M3  default 7850")},
+		{"max-plastic-rotation", number(&P::max_plastic_rotation_rad, "RAD  a joint breaks past this accumulated plastic rotation, default 0.2")},
+		{"ball-mass", number(&P::ball_mass_kg, "KG  default 2000")},
+		{"ball-radius", number(&P::ball_radius_m, "M  default 0.4")},
+		{"chain-length", number(&P::chain_length_m, "M  pivot to the ball's surface, default 5")},
+		{"chain-links", whole(&P::chain_links, "N  default 8")},
+		{"chain-mass", number(&P::chain_mass_kg, "KG  default 80")},
+		{"release-angle", number(&P::release_angle_rad, "RAD  from the vertical, default 1")},
+		{"impact-height", number(&P::impact_height_m, "M  where the ball meets the left column, default 1.5")},
+		{"ball-friction", number(&P::ball_friction, "COEFFICIENT  default 0.5")},
+	};
+	return f;
+}
+}  // namespace
+
+WreckingBallCommandLine parseWreckingBallCommandLine(const std::vector<std::string>& arguments)
+{
+	WreckingBallCommandLine cl;
+	for (const std::string& argument : arguments)
+	{
+		if (argument.rfind("--", 0) != 0)
+		{
+			cl.errors.push_back("unexpected argument '" + argument + "' (flags look like --name=value)");
+			continue;
+		}
+		std::string name = argument.substr(2), value;
+		const size_t eq = name.find('=');
+		const bool hasValue = eq != std::string::npos;
+		if (hasValue)
+		{
+			value = name.substr(eq + 1);
+			name = name.substr(0, eq);
+		}
+		if (name == "help" || name == "json")
+		{
+			if (hasValue)
+				cl.errors.push_back("--" + name + " takes no value");
+			else
+				(name == "help" ? cl.help : cl.json) = true;
+			continue;
+		}
+		if (name == "joints-csv" || name == "history")
+		{
+			if (value.empty())
+				cl.errors.push_back("--" + name + " needs a value: --" + name + "=PATH");
+			else
+				(name == "history" ? cl.history_csv : cl.joints_csv) = value;
+			continue;
+		}
+		auto it = flags().find(name);
+		if (it == flags().end())
+			cl.errors.push_back("unknown flag --" + name + " (see --help)");
+		else if (!hasValue)
+			cl.errors.push_back("--" + name + " needs a value: --" + name + "=" + it->second.help);
+		else if (!it->second.set(cl.parameters, value))
+			cl.errors.push_back("--" + name + ": '" + value + "' is not valid; expected " + it->second.help);
+	}
+	if (cl.help || !cl.errors.empty()) return cl;
+	const std::vector<std::string> invalid = validateWreckingBallParameters(cl.parameters);
+	cl.errors.insert(cl.errors.end(), invalid.begin(), invalid.end());
+	return cl;
+}
+
+std::string wreckingBallUsage()
+{
+	std::string text =
+		"usage: wrecking_ball [--json] [--joints-csv=PATH] [--history=PATH] [flags]\n"
+		"A steel portal frame of plastic joints hit by a wrecking ball on a chain, at 60 Hz frames (the toolkit's game\n"
+		"solver settings). Prints the energy balance measured from the bodies, the joints' plastic energies, the broken\n"
+		"joints and the real-time factor (simulated time / wall time of the stepping).\n"
+		"  --json  one JSON object on stdout\n"
+		"  --joints-csv=PATH  per-joint plastic rotations and energies (CSV)\n"
+		"  --history=PATH  energies per frame (CSV)\n";
+	for (const auto& [name, flag] : flags()) text += "  --" + name + "=" + flag.help + "\n";
+	return text;
+}
+}  // namespace game

@@ -1,0 +1,13 @@
+// The wrecking ball example's sliders (no GUI code): labels with units, ranges, and the parameters they stand for.
+#pragma once
+
+#include <vector>
+
+#include "SceneControls.h"
+#include "WreckingBall.h"
+
+namespace game
+{
+WreckingBallParameters wreckingBallFromSliders(const std::vector<float>& values, plastic::JointMethod method);
+structures::ControlledScene wreckingBallControls();
+}  // namespace game

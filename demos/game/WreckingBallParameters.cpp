@@ -1,0 +1,76 @@
+#include <cmath>
+
+#include "Section.h"
+#include "StructureRig.h"
+#include "WreckingBall.h"
+
+namespace game
+{
+using structures::requireRange;
+using structures::requireWhole;
+
+plastic::WorldSolverSettings wreckingBallSolverSettings()
+{
+	plastic::WorldSolverSettings s;
+	s.mlcp_cfm = 1e-7;
+	return s;
+}
+
+std::vector<std::string> validateWreckingBallParameters(const WreckingBallParameters& p)
+{
+	std::vector<std::string> e;
+	requireRange(e, "internal-step", p.solver.internal_step_s, 1e-5, 0.05, "s");
+	requireWhole(e, "iterations", p.solver.iterations, 1, 100000);
+	requireRange(e, "cfm", p.solver.mlcp_cfm, 0, 1e-2, "");
+	requireRange(e, "frame-rate", p.frame_rate_hz, 1, 1000, "Hz");
+	requireRange(e, "duration", p.duration_s, 0.01, 600, "s");
+	requireRange(e, "gravity", p.gravity_m_s2, 0.1, 100, "m/s2");
+	requireRange(e, "span", p.span_m, 0.5, 100, "m");
+	requireRange(e, "height", p.height_m, 0.5, 100, "m");
+	requireWhole(e, "column-segments", p.column_segments, 1, 64);
+	requireWhole(e, "beam-segments", p.beam_segments, 1, 64);
+	requireRange(e, "section-depth", p.section_depth_m, 0.01, 2, "m");
+	requireRange(e, "flange-width", p.flange_width_m, 0.01, 2, "m");
+	requireRange(e, "web-thickness", p.web_thickness_m, 1e-4, p.flange_width_m, "m");
+	requireRange(e, "flange-thickness", p.flange_thickness_m, 1e-4, 0.49 * p.section_depth_m, "m");
+	requireRange(e, "fy", p.yield_stress_pa, 1e6, 1e10, "Pa");
+	requireRange(e, "youngs-modulus", p.youngs_modulus_pa, 1e6, 1e13, "Pa");
+	requireRange(e, "density", p.density_kg_m3, 1, 1e5, "kg/m3");
+	requireRange(e, "max-plastic-rotation", p.max_plastic_rotation_rad, 1e-3, 100, "rad");
+	requireRange(e, "ball-mass", p.ball_mass_kg, 1, 1e6, "kg");
+	requireRange(e, "ball-radius", p.ball_radius_m, 0.05, 0.45 * p.height_m, "m");
+	requireRange(e, "chain-length", p.chain_length_m, 0.5, 100, "m");
+	requireWhole(e, "chain-links", p.chain_links, 1, 64);
+	requireRange(e, "chain-mass", p.chain_mass_kg, 0.1, 1e5, "kg");
+	requireRange(e, "release-angle", p.release_angle_rad, 0, 1.5, "rad");
+	requireRange(e, "impact-height", p.impact_height_m, p.ball_radius_m + 0.05, p.height_m, "m");
+	requireRange(e, "ball-friction", p.ball_friction, 0, 2, "");
+	if (e.empty() && p.duration_s * p.frame_rate_hz > 1e6) e.push_back("duration x frame-rate: more than 1e6 frames");
+	return e;
+}
+
+WreckingBallEstimate wreckingBallEstimate(const WreckingBallParameters& p)
+{
+	WreckingBallEstimate a;
+	plastic::Material m;
+	m.yield_stress_pa = p.yield_stress_pa;
+	const plastic::SectionProperties s = plastic::iSection(p.section_depth_m, p.flange_width_m, p.web_thickness_m, p.flange_thickness_m);
+	a.plastic_moment_nm = plastic::capacities(s, m).plastic_moment_y_nm;
+	// heights above the bottom of the swing: each mass at distance d from the pivot rises d (1 - cos(release))
+	const double drop = 1.0 - std::cos(p.release_angle_rad);
+	const double R = p.chain_length_m + p.ball_radius_m;
+	const double link = p.chain_length_m / p.chain_links;
+	double chainMoment = 0, chainInertia = 0;  // sum of m d and m d^2 over the links (their centres)
+	for (int i = 0; i < p.chain_links; i++)
+	{
+		const double d = (i + 0.5) * link, mi = p.chain_mass_kg / p.chain_links;
+		chainMoment += mi * d;
+		chainInertia += mi * d * d;
+	}
+	a.release_energy_j = p.gravity_m_s2 * drop * (p.ball_mass_kg * R + chainMoment);
+	// swinging as one rigid pendulum (the ball's own spin about its centre included): E = I w^2 / 2, v = w R
+	const double inertia = p.ball_mass_kg * R * R + 0.4 * p.ball_mass_kg * p.ball_radius_m * p.ball_radius_m + chainInertia;
+	a.impact_speed_m_s = std::sqrt(2.0 * a.release_energy_j / inertia) * R;
+	return a;
+}
+}  // namespace game

@@ -1,0 +1,161 @@
+#include "SceneControls.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace structures
+{
+namespace
+{
+int whole(float v) { return int(std::lround(double(v))); }
+
+void requireValid(const std::vector<std::string>& errors)
+{
+	if (!errors.empty()) throw std::invalid_argument(errors.front());
+}
+
+void requireCount(const std::vector<float>& values, size_t n, const char* scene)
+{
+	if (values.size() != n)
+		throw std::invalid_argument(std::string(scene) + " sliders: " + std::to_string(values.size()) + " values, expected " + std::to_string(n));
+}
+
+// the solver sliders every structure example ends with: internal step (ms) and iterations
+void solverFrom(const std::vector<float>& v, size_t at, SolverSettings& s, plastic::JointMethod method)
+{
+	s.method = method;
+	s.world.internal_step_s = double(v[at]) * 1e-3;
+	s.world.iterations = whole(v[at + 1]);
+}
+
+// the runner's defaults: the toolkit's game settings (four internal steps per 60 Hz frame, 10 iterations)
+const SliderSpec kStep = {"internal step (ms)", 0.1f, 16.7f, false, float(1000.0 / 240.0)};
+const SliderSpec kIterations = {"solver iterations", 1, 1000, true, 10};
+}  // namespace
+
+std::vector<float> initialValues(const ControlledScene& scene)
+{
+	std::vector<float> v;
+	for (const SliderSpec& s : scene.sliders) v.push_back(s.initial);
+	return v;
+}
+
+CantileverParameters cantileverFromSliders(const std::vector<float>& v, plastic::JointMethod method)
+{
+	requireCount(v, 8, "cantilever");
+	CantileverParameters p;
+	p.load_ratio = double(v[0]);
+	p.segments = whole(v[1]);
+	p.length_m = double(v[2]);
+	p.section_depth_m = double(v[3]) * 1e-3;
+	p.yield_stress_pa = double(v[4]) * 1e6;
+	p.follower_load = whole(v[5]) != 0;
+	solverFrom(v, 6, p.solver, method);
+	return p;
+}
+
+PortalParameters portalFromSliders(const std::vector<float>& v, plastic::JointMethod method)
+{
+	requireCount(v, 7, "portal");
+	PortalParameters p;
+	p.horizontal_load_n = double(v[0]) * 1e3;
+	p.vertical_load_n = double(v[1]) * 1e3;
+	p.span_m = double(v[2]);
+	p.height_m = double(v[3]);
+	p.ramp_rate_per_s = double(v[4]);
+	solverFrom(v, 5, p.solver, method);
+	return p;
+}
+
+DropWeightParameters dropWeightFromSliders(const std::vector<float>& v, plastic::JointMethod method)
+{
+	requireCount(v, 8, "drop weight");
+	DropWeightParameters p;
+	p.weight_mass_kg = double(v[0]);
+	p.impact_speed_m_s = double(v[1]);
+	p.span_m = double(v[2]);
+	p.segments = 2 * whole(v[3]);
+	p.clamped = whole(v[4]) != 0;
+	p.section_depth_m = double(v[5]) * 1e-3;
+	solverFrom(v, 6, p.solver, method);
+	return p;
+}
+
+ControlledScene cantileverControls()
+{
+	ControlledScene c;
+	c.name = "cantilever";
+	c.sliders = {{"tip load P L / Mp", 0, 3, false, 1.5f},
+				 {"segments", 1, 8, true, 4},
+				 {"length (m)", 0.5f, 5, false, 2},
+				 {"section depth (mm)", 20, 300, false, 100},
+				 {"yield stress (MPa)", 100, 1000, false, 400},
+				 {"follower load (0/1)", 0, 1, true, 0},
+				 kStep,
+				 kIterations};
+	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<SteppedScene>
+	{
+		const CantileverParameters p = cantileverFromSliders(v, m);
+		requireValid(validateCantileverParameters(p));
+		return std::make_unique<CantileverScene>(p);
+	};
+	// from +z (yaw 180), the beam and its swing in the lower half (the ledger is drawn in the upper one)
+	c.camera_distance_m = 2.8f;
+	c.camera_yaw_deg = 180;
+	c.camera_target_m[0] = 1.0f;
+	c.camera_target_m[1] = 0.4f;
+	c.time_scale = 0.1f;  // it turns 1.5 rad in 0.15 s
+	return c;
+}
+
+ControlledScene portalControls()
+{
+	ControlledScene c;
+	c.name = "portal frame";
+	c.sliders = {{"horizontal load H (kN) at factor 1", 0, 200, false, 50},
+				 {"vertical load V (kN) at factor 1", 0, 200, false, 75},
+				 {"span (m)", 1, 10, false, 4},
+				 {"height (m)", 1, 10, false, 3},
+				 {"load factor ramp (1/s)", 0.005f, 0.2f, false, 0.02f},
+				 kStep,
+				 kIterations};
+	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<SteppedScene>
+	{
+		const PortalParameters p = portalFromSliders(v, m);
+		requireValid(validatePortalParameters(p));
+		return std::make_unique<PortalScene>(p);
+	};
+	c.camera_distance_m = 3.6f;
+	c.camera_yaw_deg = 180;
+	c.camera_target_m[0] = 2;
+	c.camera_target_m[1] = 2.9f;
+	c.time_scale = 2;
+	return c;
+}
+
+ControlledScene dropWeightControls()
+{
+	ControlledScene c;
+	c.name = "drop weight";
+	c.sliders = {{"weight mass (kg)", 10, 5000, false, 1000},
+				 {"impact speed (m/s)", 0.5f, 20, false, 4.5f},
+				 {"span (m)", 0.5f, 10, false, 2},
+				 {"segment pairs", 1, 8, true, 1},
+				 {"clamped ends (0/1)", 0, 1, true, 0},
+				 {"section depth (mm)", 20, 300, false, 100},
+				 kStep,
+				 kIterations};
+	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<SteppedScene>
+	{
+		const DropWeightParameters p = dropWeightFromSliders(v, m);
+		requireValid(validateDropWeightParameters(p));
+		return std::make_unique<DropWeightScene>(p);
+	};
+	c.camera_distance_m = 1.2f;
+	c.camera_yaw_deg = 180;
+	c.camera_target_m[0] = 1;
+	c.camera_target_m[1] = 0.3f;
+	c.time_scale = 0.05f;  // the impact is over in 0.05 s
+	return c;
+}
+}  // namespace structures

@@ -1,0 +1,55 @@
+// What a scene shows while it runs, one step at a time: the console runners loop over step() until done();
+// the ExampleBrowser examples step it to the browser's clock, draw its world, colour its joints by their state and
+// print its ledger. Nothing here draws (no OpenGL): the examples read it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "btBulletDynamicsCommon.h"
+
+namespace structures
+{
+// One plastic joint as it is shown: where it is (world pivot), which bodies it joins, how far it has yielded.
+struct JointView
+{
+	btVector3 pivot_m{0, 0, 0};
+	const btRigidBody* body_a = nullptr;
+	const btRigidBody* body_b = nullptr;  // may be static (a support)
+	double plastic_rotation_rad = 0;      // booked by the joint (the hinge-motor stand-in: measured from the bodies)
+	double plastic_work_j = 0;            // booked by the joint (0 for the hinge-motor stand-in)
+	bool yielded = false;                 // it has turned plastically (more than kYieldedRotation_rad)
+	bool broken = false;                  // disabled by its plastic rotation limit
+};
+
+// A joint counts as yielded once it has turned plastically this far (rad).
+constexpr double kYieldedRotation_rad = 1e-4;
+
+// The energies of a run as far as it has come, measured from the bodies and the loads, beside the analytic answer.
+struct SceneLedger
+{
+	std::string title;  // scene, method
+	double time_s = 0;
+	double load_work_j = 0;           // work of the applied loads (or of gravity), from the loads' points
+	double kinetic_j = 0;             // of every moving body
+	double plastic_booked_j = 0;      // what the joints booked
+	double plastic_measured_j = 0;    // Mp x |rotations| measured from the bodies
+	std::vector<std::string> answer;  // the analytic answer, one line each
+	std::vector<std::string> status;  // what the run has found so far (collapse, stop, broken joints)
+};
+
+// The ledger as text lines (J, rad, s) for the screen.
+std::string ledgerText(const SceneLedger& ledger);
+
+class SteppedScene
+{
+public:
+	virtual ~SteppedScene() = default;
+	virtual void step() = 0;  // one step of the scene's clock: an internal step (structures), a 60 Hz frame (the game scene)
+	virtual bool done() const = 0;
+	virtual double time_s() const = 0;
+	virtual btDiscreteDynamicsWorld& world() = 0;
+	virtual std::vector<JointView> joints() const = 0;
+	virtual SceneLedger ledger() const = 0;
+};
+}  // namespace structures

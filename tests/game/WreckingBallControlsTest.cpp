@@ -1,0 +1,33 @@
+#include <gtest/gtest.h>
+
+#include "WreckingBallControls.h"
+
+using namespace game;
+
+// The example starts where the runner does: the same parameters, so the same scene.
+TEST(WreckingBallControls, StartAtTheRunnersDefaults)
+{
+	const WreckingBallParameters p = wreckingBallFromSliders(structures::initialValues(wreckingBallControls()), plastic::JointMethod::PlasticHinge);
+	const WreckingBallParameters d;
+	EXPECT_FLOAT_EQ(float(p.release_angle_rad), float(d.release_angle_rad));
+	EXPECT_EQ(p.ball_mass_kg, d.ball_mass_kg);
+	EXPECT_EQ(p.yield_stress_pa, d.yield_stress_pa);
+	EXPECT_FLOAT_EQ(float(p.max_plastic_rotation_rad), float(d.max_plastic_rotation_rad));
+	EXPECT_EQ(p.chain_length_m, d.chain_length_m);
+	EXPECT_EQ(p.impact_height_m, d.impact_height_m);
+	EXPECT_EQ(p.solver.solver, d.solver.solver);
+	EXPECT_EQ(p.solver.iterations, d.solver.iterations);
+	EXPECT_EQ(p.solver.mlcp_cfm, d.solver.mlcp_cfm);
+}
+
+TEST(WreckingBallControls, EverySliderRangeBuilds)
+{
+	const structures::ControlledScene scene = wreckingBallControls();
+	for (size_t i = 0; i < scene.sliders.size(); i++)
+		for (float v : {scene.sliders[i].min, scene.sliders[i].max})
+		{
+			std::vector<float> values = structures::initialValues(scene);
+			values[i] = v;
+			EXPECT_NO_THROW(scene.build(values, plastic::JointMethod::PlasticHinge)) << scene.sliders[i].label << " = " << v;
+		}
+}
