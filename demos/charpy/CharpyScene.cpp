@@ -124,6 +124,12 @@ CharpyScene::CharpyScene(const CharpyParameters& parameters)
 		destroy();  // the destructor does not run for a constructor that throws
 		throw;
 	}
+	m_contactMovers.assign(m_parts.begin(), m_parts.end());
+	m_contactOthers.assign(m_anvils.begin(), m_anvils.end());
+	if (m_hammer)
+	{
+		m_contactOthers.push_back(m_hammer);
+	}
 	m_initialEnergy_j = energies().total_j;
 	m_previousBend_rad = bendAngle_rad();
 }
@@ -383,13 +389,7 @@ void CharpyScene::createHammer()
 
 bool CharpyScene::nearContact(double horizon_s) const
 {
-	std::vector<const btCollisionObject*> movers(m_parts.begin(), m_parts.end());
-	std::vector<const btCollisionObject*> others(m_anvils.begin(), m_anvils.end());
-	if (m_hammer)
-	{
-		others.push_back(m_hammer);
-	}
-	return plastic::mayTouchWithin(movers, others, horizon_s);
+	return plastic::mayTouchWithin(m_contactMovers, m_contactOthers, horizon_s);
 }
 
 void CharpyScene::step()

@@ -84,6 +84,8 @@ private:
 	std::unique_ptr<btDiscreteDynamicsWorld> m_world;
 	std::vector<btRigidBody*> m_parts;
 	std::vector<btRigidBody*> m_anvils;
+	std::vector<const btCollisionObject*> m_contactMovers;  // the specimen's parts: what the substep policy asks about
+	std::vector<const btCollisionObject*> m_contactOthers;  // the anvils and the hammer
 	std::vector<btTypedConstraint*> m_joints;  // views of the toolkit joints m_impl owns
 	btRigidBody* m_hammer = nullptr;
 	btTypedConstraint* m_middleJoint = nullptr;

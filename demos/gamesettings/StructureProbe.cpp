@@ -147,7 +147,8 @@ ProbeRun runRigid(const ProbeCase& c, JointMethod method, const ProbeSetting& se
 	run.wall_s_per_step = run.internal_steps > 0 ? wall_s / run.internal_steps : 0;
 	run.solver_fallbacks = structure.solverFallbacks();
 	world.removeRigidBody(&support);
-	beams.clear();
+	// last built first: a later beam's first joint holds a body of the one before it
+	while (!beams.empty()) beams.pop_back();
 	return run;
 }
 

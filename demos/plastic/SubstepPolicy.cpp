@@ -35,18 +35,20 @@ bool overlap(const btVector3& aLo, const btVector3& aHi, const btVector3& bLo, c
 bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
 					double horizon_s, double clearance_m)
 {
-	std::vector<btVector3> lo(others.size()), hi(others.size());
-	for (size_t j = 0; j < others.size(); j++)
-	{
-		reach(others[j], horizon_s, clearance_m, lo[j], hi[j]);
-	}
+	// no allocation: a scene asks this several times per frame
 	for (const btCollisionObject* mover : movers)
 	{
 		btVector3 mLo, mHi;
 		reach(mover, horizon_s, clearance_m, mLo, mHi);
-		for (size_t j = 0; j < others.size(); j++)
+		for (const btCollisionObject* other : others)
 		{
-			if (others[j] != mover && overlap(mLo, mHi, lo[j], hi[j]))
+			if (other == mover)
+			{
+				continue;
+			}
+			btVector3 oLo, oHi;
+			reach(other, horizon_s, clearance_m, oLo, oHi);
+			if (overlap(mLo, mHi, oLo, oHi))
 			{
 				return true;
 			}
