@@ -34,7 +34,7 @@ def random_args(rng):
     return args
 
 
-def main(runner, work, cases):
+def main(runner, work, cases, hang_s=30.0):
     rng = random.Random(20261121)
     os.makedirs(work, exist_ok=True)
     history = os.path.join(work, "history.csv")
@@ -45,9 +45,9 @@ def main(runner, work, cases):
             os.remove(history)
         cmd = [runner] + args + [f"--history={history}"]
         try:
-            done = subprocess.run(cmd, capture_output=True, text=True, timeout=30)
+            done = subprocess.run(cmd, capture_output=True, text=True, timeout=hang_s)
         except subprocess.TimeoutExpired:
-            failures.append(f"hang (> 30 s): {cmd}")
+            failures.append(f"hang (> {hang_s:g} s): {cmd}")
             continue
         if done.returncode not in (0, 2):
             failures.append(f"exit {done.returncode} (crash?): {cmd}\n{done.stderr[-300:]}")
@@ -64,4 +64,5 @@ def main(runner, work, cases):
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1], sys.argv[2], int(sys.argv[3]) if len(sys.argv) > 3 else 300))
+    sys.exit(main(sys.argv[1], sys.argv[2], int(sys.argv[3]) if len(sys.argv) > 3 else 300,
+                  float(sys.argv[4]) if len(sys.argv) > 4 else 30.0))
