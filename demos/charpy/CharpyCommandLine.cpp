@@ -1,5 +1,7 @@
 #include "CharpyCommandLine.h"
 
+#include "FlagArgument.h"
+
 #include <cerrno>
 #include <cstdlib>
 #include <functional>
@@ -102,21 +104,14 @@ CharpyCommandLine parseCharpyCommandLine(const std::vector<std::string>& argumen
 	}
 	for (const std::string& argument : arguments)
 	{
-		if (argument.rfind("--", 0) != 0)
+		const std::optional<plastic::FlagArgument> flag = plastic::splitFlagArgument(argument, cl.errors);
+		if (!flag)
 		{
-			cl.errors.push_back("unexpected argument '" + argument + "' (flags look like --name=value)");
 			continue;
 		}
-		std::string name = argument.substr(2);
-		std::string value;
-		bool hasValue = false;
-		size_t eq = name.find('=');
-		if (eq != std::string::npos)
-		{
-			value = name.substr(eq + 1);
-			name = name.substr(0, eq);
-			hasValue = true;
-		}
+		const std::string& name = flag->name;
+		const std::string& value = flag->value;
+		const bool hasValue = flag->hasValue;
 		auto flagWithoutValue = [&](bool& target) {
 			if (hasValue)
 				cl.errors.push_back("--" + name + " takes no value");

@@ -1,5 +1,7 @@
 #include "StructuresCommandLine.h"
 
+#include "FlagArgument.h"
+
 #include <cerrno>
 #include <cstdlib>
 #include <functional>
@@ -207,19 +209,14 @@ StructuresCommandLine parseStructuresCommandLine(const std::vector<std::string>&
 	std::vector<std::pair<std::string, std::pair<bool, std::string>>> flags;
 	for (const std::string& argument : arguments)
 	{
-		if (argument.rfind("--", 0) != 0)
+		const std::optional<plastic::FlagArgument> flag = plastic::splitFlagArgument(argument, cl.errors);
+		if (!flag)
 		{
-			cl.errors.push_back("unexpected argument '" + argument + "' (flags look like --name=value)");
 			continue;
 		}
-		std::string name = argument.substr(2), value;
-		const size_t eq = name.find('=');
-		const bool hasValue = eq != std::string::npos;
-		if (hasValue)
-		{
-			value = name.substr(eq + 1);
-			name = name.substr(0, eq);
-		}
+		const std::string& name = flag->name;
+		const std::string& value = flag->value;
+		const bool hasValue = flag->hasValue;
 		if (name == "help" || name == "json")
 		{
 			if (hasValue)
