@@ -11,22 +11,8 @@ namespace game
 {
 namespace
 {
-bool parseNumber(const std::string& text, double& value)
-{
-	if (text.empty()) return false;
-	char* end = nullptr;
-	errno = 0;
-	value = std::strtod(text.c_str(), &end);
-	return end == text.c_str() + text.size() && errno == 0;
-}
-
-bool parseInteger(const std::string& text, int& value)
-{
-	double d;
-	if (!parseNumber(text, d) || d != static_cast<double>(static_cast<long long>(d)) || d < -1e9 || d > 1e9) return false;
-	value = static_cast<int>(d);
-	return true;
-}
+using plastic::parseInteger;
+using plastic::parseNumber;
 
 struct Flag
 {

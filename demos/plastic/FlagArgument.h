@@ -1,6 +1,8 @@
 // One command-line argument in the runners' flag style (charpy, structures, wrecking_ball): --name or --name=value.
 #pragma once
 
+#include <cerrno>
+#include <cstdlib>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,5 +34,29 @@ inline std::optional<FlagArgument> splitFlagArgument(const std::string& argument
 		flag.hasValue = true;
 	}
 	return flag;
+}
+// A flag's value as a number: the whole text must be a number strtod reads (the parameters' validation checks its range).
+inline bool parseNumber(const std::string& text, double& value)
+{
+	if (text.empty())
+	{
+		return false;
+	}
+	char* end = nullptr;
+	errno = 0;
+	value = std::strtod(text.c_str(), &end);
+	return end == text.c_str() + text.size() && errno == 0;
+}
+
+// A flag's value as a whole number in [-1e9, 1e9].
+inline bool parseInteger(const std::string& text, int& value)
+{
+	double d;
+	if (!parseNumber(text, d) || d != static_cast<double>(static_cast<long long>(d)) || d < -1e9 || d > 1e9)
+	{
+		return false;
+	}
+	value = static_cast<int>(d);
+	return true;
 }
 }  // namespace plastic
