@@ -51,18 +51,8 @@ const std::map<std::string, Flag>& flags()
 					},
 					"NAME  joint method: hinge-motor, plastic-hinge, elastic-plastic, elastic-plastic2; default plastic-hinge"}},
 		{"solver", {[](P& p, const std::string& t)
-					{
-						if (t == "dantzig")
-							p.solver.solver = plastic::SolverKind::MlcpDantzig;
-						else if (t == "pgs")
-							p.solver.solver = plastic::SolverKind::MlcpProjectedGaussSeidel;
-						else if (t == "sequential-impulse")
-							p.solver.solver = plastic::SolverKind::SequentialImpulse;
-						else
-							return false;
-						return true;
-					},
-					"NAME  dantzig (toolkit default: MLCP, direct), pgs (MLCP, projected Gauss-Seidel), sequential-impulse (upstream)"}},
+					{ return plastic::parseSolverKind(t, p.solver.solver); },
+					"NAME  dantzig (toolkit default: MLCP, direct), direct (btDirectJointSolver: joint rows solved directly), pgs (MLCP, projected Gauss-Seidel), sequential-impulse (upstream)"}},
 		{"internal-step", {[](P& p, const std::string& t)
 						   { return parseNumber(t, p.solver.internal_step_s); },
 						   "SECONDS  fixed internal step, default 1/240"}},

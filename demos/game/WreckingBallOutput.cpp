@@ -17,25 +17,12 @@ std::string num(double value)
 	return text;
 }
 
-const char* solverName(plastic::SolverKind k)
-{
-	switch (k)
-	{
-		case plastic::SolverKind::SequentialImpulse:
-			return "sequential-impulse";
-		case plastic::SolverKind::MlcpDantzig:
-			return "dantzig";
-		case plastic::SolverKind::MlcpProjectedGaussSeidel:
-			return "pgs";
-	}
-	return "?";
-}
 }  // namespace
 
 std::string toJson(const WreckingBallParameters& p, const WreckingBallResult& r)
 {
 	std::ostringstream o;
-	o << "{\"scene\":\"wrecking-ball\",\"method\":\"" << plastic::jointMethodName(p.method) << "\",\"solver\":\"" << solverName(p.solver.solver)
+	o << "{\"scene\":\"wrecking-ball\",\"method\":\"" << plastic::jointMethodName(p.method) << "\",\"solver\":\"" << plastic::solverKindName(p.solver.solver)
 	  << "\",\"iterations\":" << p.solver.iterations << ",\"internal_step_s\":" << num(p.solver.internal_step_s) << ",\"frame_rate_hz\":" << num(p.frame_rate_hz)
 	  << ",\"plastic_moment_Nm\":" << num(r.estimate.plastic_moment_nm) << ",\"max_plastic_rotation_rad\":" << num(p.max_plastic_rotation_rad)
 	  << ",\"release_energy_J\":" << num(r.estimate.release_energy_j) << ",\"estimated_impact_speed_m_s\":" << num(r.estimate.impact_speed_m_s)
@@ -68,7 +55,7 @@ std::string toJson(const WreckingBallParameters& p, const WreckingBallResult& r)
 std::string toSummary(const WreckingBallParameters& p, const WreckingBallResult& r)
 {
 	std::ostringstream o;
-	o << "wrecking ball, " << plastic::jointMethodName(p.method) << ", " << solverName(p.solver.solver) << ", " << p.solver.iterations << " iterations, internal step "
+	o << "wrecking ball, " << plastic::jointMethodName(p.method) << ", " << plastic::solverKindName(p.solver.solver) << ", " << p.solver.iterations << " iterations, internal step "
 	  << p.solver.internal_step_s << " s, " << p.frame_rate_hz << " Hz frames: " << r.frames << " frames, " << r.internal_steps << " internal steps, "
 	  << r.simulated_s << " s simulated in " << r.wall_s << " s (real-time factor " << r.real_time_factor << ", slowest frame " << 1e3 * r.max_frame_wall_s
 	  << " ms)\n";

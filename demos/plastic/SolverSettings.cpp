@@ -29,13 +29,15 @@ const char* solverKindName(SolverKind kind)
 			return "dantzig";
 		case SolverKind::MlcpProjectedGaussSeidel:
 			return "pgs";
+		case SolverKind::DirectJoint:
+			return "direct";
 	}
 	return "?";
 }
 
 bool parseSolverKind(const std::string& name, SolverKind& kind)
 {
-	for (SolverKind k : {SolverKind::SequentialImpulse, SolverKind::MlcpDantzig, SolverKind::MlcpProjectedGaussSeidel})
+	for (SolverKind k : {SolverKind::SequentialImpulse, SolverKind::MlcpDantzig, SolverKind::MlcpProjectedGaussSeidel, SolverKind::DirectJoint})
 		if (name == solverKindName(k))
 		{
 			kind = k;
@@ -134,6 +136,9 @@ OwnedSolver::OwnedSolver(SolverKind kind, double mlcpMaxImpulse_ns, double mlcpC
 		case SolverKind::SequentialImpulse:
 			m_solver = std::make_unique<btSequentialImpulseConstraintSolver>();
 			return;
+		case SolverKind::DirectJoint:
+			m_solver = std::make_unique<btDirectJointSolver>();
+			return;
 		case SolverKind::MlcpDantzig:
 			m_mlcp = std::make_unique<LimitedDantzigSolver>(mlcpMaxImpulse_ns);
 			break;
@@ -150,6 +155,8 @@ int OwnedSolver::retries() const { return m_mlcp ? static_cast<const Regularized
 
 int OwnedSolver::fallbacks() const
 {
+	if (const btDirectJointSolver* direct = dynamic_cast<const btDirectJointSolver*>(m_solver.get()))
+		return direct->getNumFallbacks();
 	return m_mlcp ? static_cast<const btMLCPSolver*>(m_solver.get())->getNumFallbacks() : 0;
 }
 

@@ -35,9 +35,10 @@ enum class SolverKind
 	SequentialImpulse,          // btSequentialImpulseConstraintSolver (upstream default)
 	MlcpDantzig,                // btMLCPSolver with btDantzigSolver: a direct solve of the boxed LCP
 	MlcpProjectedGaussSeidel,   // btMLCPSolver with btSolveProjectedGaussSeidel
+	DirectJoint,                // btDirectJointSolver (patch 0019): joint rows solved directly, contacts by sequential impulse
 };
 
-// "sequential-impulse", "dantzig", "pgs" (command lines, JSON, reports)
+// "sequential-impulse", "dantzig", "pgs", "direct" (command lines, JSON, reports)
 const char* solverKindName(SolverKind kind);
 // the kind of one of those names; false (kind untouched) for any other text
 bool parseSolverKind(const std::string& name, SolverKind& kind);
@@ -72,7 +73,8 @@ public:
 	explicit OwnedSolver(SolverKind kind, double mlcpMaxImpulse_ns = 1000.0, double mlcpCfm = 0.0, double mlcpRetryCfmFactor = 0.0);
 	~OwnedSolver();
 	btConstraintSolver* get() { return m_solver.get(); }
-	// steps in which the MLCP solver failed and fell back to sequential impulse (btMLCPSolver::getNumFallbacks); 0 for SI
+	// steps in which the MLCP solver failed and fell back to sequential impulse (btMLCPSolver::getNumFallbacks, and
+	// btDirectJointSolver::getNumFallbacks); 0 for SI
 	int fallbacks() const;
 	// steps in which the direct solve was tried a second time with the larger CFM (WorldSolverSettings::mlcp_retry_cfm_factor)
 	int retries() const;

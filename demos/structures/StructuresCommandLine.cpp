@@ -72,6 +72,7 @@ Flags<P> commonFlags()
 	f["solver"] = {[](P& p, const std::string& t)
 				   { return plastic::parseSolverKind(t, p.solver.world.solver); },
 				   "NAME  constraint solver: dantzig (btMLCPSolver + btDantzigSolver, a direct solve; the toolkit default), "
+				   "direct (btDirectJointSolver, patch 0019: joint rows solved directly along the joint graph), "
 				   "sequential-impulse (upstream's btSequentialImpulseConstraintSolver), pgs (btMLCPSolver + projected Gauss-Seidel)"};
 	f["dt"] = {[](P& p, const std::string& t)
 			   { return parseNumber(t, p.solver.world.internal_step_s); },

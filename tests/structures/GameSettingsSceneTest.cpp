@@ -22,6 +22,8 @@ using plastic::SolverKind;
 namespace
 {
 const JointMethod kMethods[] = {JointMethod::HingeMotor, JointMethod::PlasticHinge, JointMethod::ElasticPlastic, JointMethod::ElasticPlastic2};
+// the toolkit's default (btMLCPSolver + Dantzig with its CFM) and btDirectJointSolver (patch 0019), which needs none
+const SolverKind kSolvers[] = {SolverKind::MlcpDantzig, SolverKind::DirectJoint};
 
 // the toolkit's defaults: Dantzig, 10 iterations, 1/240 s
 SolverSettings game(JointMethod method, SolverKind solver = SolverKind::MlcpDantzig)
@@ -62,93 +64,98 @@ std::vector<std::string> names(const PortalResult& r, const std::vector<int>& si
 	return n;
 }
 
-std::string label(JointMethod m, const char* what = "") { return std::string(plastic::jointMethodName(m)) + " " + what; }
+std::string label(JointMethod m, const char* what = "", SolverKind k = SolverKind::MlcpDantzig) { return std::string(plastic::solverKindName(k)) + " " + plastic::jointMethodName(m) + " " + what; }
 }  // namespace
 
 TEST(GameSettingsCantilever, CollapsesAtMpOverLWithTheHingeAtTheRoot)
 {
-	for (JointMethod m : kMethods)
-	{
-		CantileverParameters p;
-		p.solver = game(m);
-		p.ramp_rate_per_s = 0.02;
-		const CantileverResult r = runCantilever(p);
-		EXPECT_GT(r.collapse_ratio, 0.97) << label(m);
-		EXPECT_LT(r.collapse_ratio, 1.03) << label(m);
-		EXPECT_EQ(r.mechanism, std::vector<int>{0}) << label(m, "only the root turns");
-		EXPECT_EQ(r.solver_fallbacks, 0) << label(m);
-	}
+	for (SolverKind k : kSolvers)
+		for (JointMethod m : kMethods)
+		{
+			CantileverParameters p;
+			p.solver = game(m, k);
+			p.ramp_rate_per_s = 0.02;
+			const CantileverResult r = runCantilever(p);
+			EXPECT_GT(r.collapse_ratio, 0.97) << label(m, "", k);
+			EXPECT_LT(r.collapse_ratio, 1.03) << label(m, "", k);
+			EXPECT_EQ(r.mechanism, std::vector<int>{0}) << label(m, "only the root turns", k);
+			EXPECT_EQ(r.solver_fallbacks, 0) << label(m, "", k);
+		}
 }
 
 // 0.9 Mp / L for 3 s: nothing turns (the plastic joints hold to 1e-4 rad); the hinge-motor stand-in, a motor at
 // target velocity 0 with no angle to return to, creeps about 0.5 mrad/s.
 TEST(GameSettingsCantilever, HoldsBelowCollapseWithoutCreep)
 {
-	for (JointMethod m : kMethods)
-	{
-		CantileverParameters p;
-		p.solver = game(m);
-		p.load_ratio = 0.9;
-		p.duration_s = 3;
-		const CantileverResult r = runCantilever(p);
-		const double limit = m == JointMethod::HingeMotor ? 5e-3 : 1e-4;
-		EXPECT_LT(r.max_root_rotation_rad, limit) << label(m);
-		EXPECT_LT(r.max_inner_rotation_rad, limit) << label(m);
-		EXPECT_LT(r.creep_rad, limit) << label(m, "rotation from 1 s to 3 s");
-	}
+	for (SolverKind k : kSolvers)
+		for (JointMethod m : kMethods)
+		{
+			CantileverParameters p;
+			p.solver = game(m, k);
+			p.load_ratio = 0.9;
+			p.duration_s = 3;
+			const CantileverResult r = runCantilever(p);
+			const double limit = m == JointMethod::HingeMotor ? 5e-3 : 1e-4;
+			EXPECT_LT(r.max_root_rotation_rad, limit) << label(m, "", k);
+			EXPECT_LT(r.max_inner_rotation_rad, limit) << label(m, "", k);
+			EXPECT_LT(r.creep_rad, limit) << label(m, "rotation from 1 s to 3 s", k);
+		}
 }
 
 // 1.5 Mp / L dead load: it stops where the load's work equals Mp theta (within 1 %, measured -0.46 %); no energy
 // is gained: the load's work is at least the kinetic energy plus Mp times the rotations measured on the bodies.
 TEST(GameSettingsCantilever, DeadLoadStopsWithoutEnergyGain)
 {
-	for (JointMethod m : kMethods)
-	{
-		CantileverParameters p;
-		p.solver = game(m);
-		p.load_ratio = 1.5;
-		const CantileverResult r = runCantilever(p);
-		EXPECT_NEAR(r.stop_rotation_rad, r.answer.stop_rotation_rad, 0.01 * r.answer.stop_rotation_rad) << label(m);
-		EXPECT_GT(r.energy_balance_error_pct, -0.1) << label(m, "energy gained");
-		EXPECT_LT(r.energy_balance_error_pct, 1.0) << label(m);
-		EXPECT_LT(r.max_inner_rotation_rad, 1e-3) << label(m);
-	}
+	for (SolverKind k : kSolvers)
+		for (JointMethod m : kMethods)
+		{
+			CantileverParameters p;
+			p.solver = game(m, k);
+			p.load_ratio = 1.5;
+			const CantileverResult r = runCantilever(p);
+			EXPECT_NEAR(r.stop_rotation_rad, r.answer.stop_rotation_rad, 0.01 * r.answer.stop_rotation_rad) << label(m, "", k);
+			EXPECT_GT(r.energy_balance_error_pct, -0.1) << label(m, "energy gained", k);
+			EXPECT_LT(r.energy_balance_error_pct, 1.0) << label(m, "", k);
+			EXPECT_LT(r.max_inner_rotation_rad, 1e-3) << label(m, "", k);
+		}
 }
 
 TEST(GameSettingsPortal, ThreeMechanismsWithinThreePercent)
 {
-	for (const PortalCase& c : kPortalCases)
-		for (JointMethod m : kMethods)
-		{
-			const PortalResult r = runPortal(portal(c, game(m)));
-			ASSERT_NEAR(r.answer.collapse_factor, c.factor, 1e-9) << c.name;
-			EXPECT_GT(r.collapse_factor, 0.97 * c.factor) << label(m, c.name);
-			EXPECT_LT(r.collapse_factor, 1.03 * c.factor) << label(m, c.name);
-			EXPECT_EQ(names(r, r.mechanism_sites), c.hinges) << label(m, c.name);
-			EXPECT_EQ(r.solver_fallbacks, 0) << label(m, c.name);
-			// no energy gain: the loads' work covers the kinetic energy and Mp times the rotations measured on the
-			// bodies (the hinge-motor stand-in dissipates less than Mp where it turns below its cap: not checked)
-			if (m != JointMethod::HingeMotor)
+	for (SolverKind k : kSolvers)
+		for (const PortalCase& c : kPortalCases)
+			for (JointMethod m : kMethods)
 			{
-				EXPECT_LT(r.kinetic_j + r.geometric_plastic_work_j, 1.005 * r.load_work_j) << label(m, c.name);
+				const PortalResult r = runPortal(portal(c, game(m, k)));
+				ASSERT_NEAR(r.answer.collapse_factor, c.factor, 1e-9) << c.name;
+				EXPECT_GT(r.collapse_factor, 0.97 * c.factor) << label(m, c.name, k);
+				EXPECT_LT(r.collapse_factor, 1.03 * c.factor) << label(m, c.name, k);
+				EXPECT_EQ(names(r, r.mechanism_sites), c.hinges) << label(m, c.name, k);
+				EXPECT_EQ(r.solver_fallbacks, 0) << label(m, c.name, k);
+				// no energy gain: the loads' work covers the kinetic energy and Mp times the rotations measured on the
+				// bodies (the hinge-motor stand-in dissipates less than Mp where it turns below its cap: not checked)
+				if (m != JointMethod::HingeMotor)
+				{
+					EXPECT_LT(r.kinetic_j + r.geometric_plastic_work_j, 1.005 * r.load_work_j) << label(m, c.name, k);
+				}
 			}
-		}
 }
 
 TEST(GameSettingsPortal, HoldsAtNineTenthsOfCollapseWithoutCreep)
 {
-	for (const PortalCase& c : kPortalCases)
-		for (JointMethod m : kMethods)
-		{
-			PortalParameters p = portal(c, game(m));
-			p.ramp_rate_per_s = 0;
-			p.load_factor = 0.9 * c.factor;
-			p.duration_s = 3;
-			const PortalResult r = runPortal(p);
-			const double limit = m == JointMethod::HingeMotor ? 5e-3 : 1e-3;
-			EXPECT_LT(r.max_rotation_rad, limit) << label(m, c.name);
-			EXPECT_LT(r.creep_rad, m == JointMethod::HingeMotor ? 5e-3 : 1e-4) << label(m, c.name);
-		}
+	for (SolverKind k : kSolvers)
+		for (const PortalCase& c : kPortalCases)
+			for (JointMethod m : kMethods)
+			{
+				PortalParameters p = portal(c, game(m, k));
+				p.ramp_rate_per_s = 0;
+				p.load_factor = 0.9 * c.factor;
+				p.duration_s = 3;
+				const PortalResult r = runPortal(p);
+				const double limit = m == JointMethod::HingeMotor ? 5e-3 : 1e-3;
+				EXPECT_LT(r.max_rotation_rad, limit) << label(m, c.name, k);
+				EXPECT_LT(r.creep_rad, m == JointMethod::HingeMotor ? 5e-3 : 1e-4) << label(m, c.name, k);
+			}
 }
 
 // The same settings with upstream's solver: the chain sags and the cantilever "collapses" at a few percent of
