@@ -3,12 +3,16 @@
 // code paths), with gravity and contacts. It prints every body's state after each second
 // as exact hexadecimal floats. The test builds it twice, against the patched BulletDynamics
 // and against an unpatched one, and requires identical output: the patches change nothing
-// while their new settings stay at their defaults.
+// while their new settings stay at their defaults. With the argument `mlcp` the same scene
+// runs under btMLCPSolver + btDantzigSolver (patch 0021 resizes its row offsets only).
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <vector>
 
 #include "btBulletDynamicsCommon.h"
+#include "BulletDynamics/MLCPSolvers/btDantzigSolver.h"
+#include "BulletDynamics/MLCPSolvers/btMLCPSolver.h"
 
 namespace
 {
@@ -17,11 +21,19 @@ struct Scene
 	btDefaultCollisionConfiguration configuration;
 	btCollisionDispatcher dispatcher{&configuration};
 	btDbvtBroadphase broadphase;
-	btSequentialImpulseConstraintSolver solver;
-	btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+	btDantzigSolver dantzig;
+	std::unique_ptr<btSequentialImpulseConstraintSolver> solver;
+	btDiscreteDynamicsWorld world;
 	std::vector<std::unique_ptr<btCollisionShape>> shapes;
 	std::vector<std::unique_ptr<btRigidBody>> bodies;
 	std::vector<std::unique_ptr<btTypedConstraint>> constraints;
+
+	explicit Scene(bool mlcp)
+		: solver(mlcp ? std::unique_ptr<btSequentialImpulseConstraintSolver>(new btMLCPSolver(&dantzig))
+					  : std::make_unique<btSequentialImpulseConstraintSolver>()),
+		  world(&dispatcher, &broadphase, solver.get(), &configuration)
+	{
+	}
 
 	// A box of half extents h (m), mass (kg; 0 = static) at position (m).
 	btRigidBody* box(const btVector3& h, btScalar mass, const btVector3& position)
@@ -62,9 +74,9 @@ btTransform frame(const btVector3& origin, const btQuaternion& rotation = btQuat
 }
 }  // namespace
 
-int main()
+int main(int argc, char** argv)
 {
-	Scene s;
+	Scene s(argc > 1 && std::strcmp(argv[1], "mlcp") == 0);
 	s.world.setGravity(btVector3(0, -9.81, 0));
 	s.box(btVector3(5, 0.5, 5), 0, btVector3(0, -0.5, 0));  // ground
 

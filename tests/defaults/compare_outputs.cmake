@@ -1,7 +1,8 @@
 # Runs an upstream-only program built with and without the patches; what it prints (hexadecimal float
-# states, or the constraints of every island) must be identical. -DMIN_LINES: the least it must print.
+# states, or the constraints of every island) must be identical. -DMIN_LINES: the least it must print;
+# -DARGS: the program's arguments (a ;-list).
 foreach(variant PATCHED UNPATCHED)
-	execute_process(COMMAND "${${variant}}" RESULT_VARIABLE rc OUTPUT_VARIABLE out_${variant} ERROR_VARIABLE err)
+	execute_process(COMMAND "${${variant}}" ${ARGS} RESULT_VARIABLE rc OUTPUT_VARIABLE out_${variant} ERROR_VARIABLE err)
 	if(NOT rc EQUAL 0)
 		message(FATAL_ERROR "${${variant}} failed (${rc}): ${err}")
 	endif()
