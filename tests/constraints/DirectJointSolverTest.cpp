@@ -105,6 +105,9 @@ BeamResult runBeam(const Beam& b, double load_ratio, double duration_s = 3.0)
 		if (j->getCurrentPlasticRotation() > 1e-6) r.yielded++;
 	}
 	if (b.direct) r.fallbacks = static_cast<btDirectJointSolver*>(solver.get())->getNumFallbacks();
+	// the world is destroyed last but one: take the joints and bodies out before they go
+	for (const auto& j : joints) world.removeConstraint(j.get());
+	for (const auto& body : bodies) world.removeRigidBody(body.get());
 	return r;
 }
 }  // namespace
