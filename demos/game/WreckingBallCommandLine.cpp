@@ -52,16 +52,13 @@ const std::map<std::string, Flag>& flags()
 					"NAME  joint method: hinge-motor, plastic-hinge, elastic-plastic, elastic-plastic2; default plastic-hinge"}},
 		{"solver", {[](P& p, const std::string& t)
 					{ return plastic::parseSolverKind(t, p.solver.solver); },
-					"NAME  dantzig (toolkit default: MLCP, direct), direct (btDirectJointSolver: joint rows solved directly), pgs (MLCP, projected Gauss-Seidel), sequential-impulse (upstream)"}},
+					"NAME  direct (btDirectJointSolver: joint rows solved directly; the toolkit default), dantzig (btMLCPSolver + btDantzigSolver as upstream), pgs (btMLCPSolver, projected Gauss-Seidel), sequential-impulse (upstream)"}},
 		{"internal-step", {[](P& p, const std::string& t)
 						   { return parseNumber(t, p.solver.internal_step_s); },
 						   "SECONDS  fixed internal step, default 1/240"}},
 		{"iterations", {[](P& p, const std::string& t)
 						{ return parseInteger(t, p.solver.iterations); },
 						"N  solver iterations, default 10"}},
-		{"cfm", {[](P& p, const std::string& t)
-				 { return parseNumber(t, p.solver.mlcp_cfm); },
-				 "VALUE  the solver's global CFM (regularises the frame's closed loop for the direct solve), default 1e-7"}},
 		{"frame-rate", number(&P::frame_rate_hz, "HZ  frames per second, default 60")},
 		{"duration", number(&P::duration_s, "SECONDS  simulated, default 3")},
 		{"gravity", number(&P::gravity_m_s2, "M_S2  default 9.81")},

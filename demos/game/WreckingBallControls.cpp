@@ -16,7 +16,7 @@ WreckingBallParameters wreckingBallFromSliders(const std::vector<float>& v, plas
 	p.max_plastic_rotation_rad = double(v[3]);
 	p.chain_length_m = double(v[4]);
 	p.impact_height_m = double(v[5]);
-	p.solver.solver = std::lround(double(v[6])) ? plastic::SolverKind::MlcpDantzig : plastic::SolverKind::SequentialImpulse;
+	p.solver.solver = std::lround(double(v[6])) ? plastic::SolverKind::DirectJoint : plastic::SolverKind::SequentialImpulse;
 	p.solver.iterations = int(std::lround(double(v[7])));
 	return p;
 }

@@ -11,9 +11,7 @@ using structures::requireWhole;
 
 plastic::WorldSolverSettings wreckingBallSolverSettings()
 {
-	plastic::WorldSolverSettings s;
-	s.mlcp_cfm = 1e-7;
-	return s;
+	return plastic::WorldSolverSettings();
 }
 
 std::vector<std::string> validateWreckingBallParameters(const WreckingBallParameters& p)
@@ -21,7 +19,6 @@ std::vector<std::string> validateWreckingBallParameters(const WreckingBallParame
 	std::vector<std::string> e;
 	requireRange(e, "internal-step", p.solver.internal_step_s, 1e-5, 0.05, "s");
 	requireWhole(e, "iterations", p.solver.iterations, 1, 100000);
-	requireRange(e, "cfm", p.solver.mlcp_cfm, 0, 1e-2, "");
 	requireRange(e, "frame-rate", p.frame_rate_hz, 1, 1000, "Hz");
 	requireRange(e, "duration", p.duration_s, 0.01, 600, "s");
 	requireRange(e, "gravity", p.gravity_m_s2, 0.1, 100, "m/s2");

@@ -182,7 +182,7 @@ int main(int argc, char** argv)
 	{
 		md << "\n## Every joint method: upstream defaults against the toolkit default\n\n" << kHeader;
 		ProbeSetting toolkit;
-		toolkit.name = "toolkit default";  // WorldSolverSettings{} and JointSolverSettings{}: Dantzig
+		toolkit.name = "toolkit default";  // WorldSolverSettings{} and JointSolverSettings{}: btDirectJointSolver
 		for (JointMethod m : {JointMethod::HingeMotor, JointMethod::PlasticHinge, JointMethod::ElasticPlastic, JointMethod::ElasticPlastic2})
 			for (const ProbeSetting& s : {upstream(), toolkit})
 				for (const ProbeCase& c : cases)

@@ -54,9 +54,6 @@ WorldSolverSettings upstreamWorldSolverSettings()
 	s.internal_step_s = 1.0 / 240.0;
 	s.erp = 0.2;
 	s.randomize_order = false;
-	s.mlcp_cfm = 0;
-	s.mlcp_retry_cfm_factor = 0;
-	s.mlcp_max_impulse_ns = 1000;
 	return s;
 }
 
@@ -65,7 +62,7 @@ StructureWorld::StructureWorld(const WorldSolverSettings& settings)
 	  m_configuration(std::make_unique<btDefaultCollisionConfiguration>()),
 	  m_dispatcher(std::make_unique<btCollisionDispatcher>(m_configuration.get())),
 	  m_broadphase(std::make_unique<btDbvtBroadphase>()),
-	  m_solver(settings.solver, settings.mlcp_max_impulse_ns, settings.mlcp_cfm, settings.mlcp_retry_cfm_factor)
+	  m_solver(settings.solver)
 {
 	if (!(settings.internal_step_s > 0 && settings.internal_step_s <= 0.1))
 	{
@@ -86,50 +83,7 @@ int StructureWorld::stepFrame(double frame_s)
 
 void StructureWorld::stepOnce() { m_world->stepSimulation(btScalar(m_settings.internal_step_s), 0); }
 
-namespace
-{
-// btDantzigSolver whose acceptable impulse (upstream a fixed 1000 N s) is set
-class LimitedDantzigSolver : public btDantzigSolver
-{
-public:
-	explicit LimitedDantzigSolver(double maxImpulse_ns) { m_acceptableUpperLimitSolution = btScalar(maxImpulse_ns); }
-};
-
-// btMLCPSolver whose LCP matrix gets cfm / dt more on its diagonal before the direct solve; when the solve fails
-// (Dantzig's pivoting stalls, s <= 0, on degenerate rows at their bounds), it is tried once more with retryFactor
-// times that CFM before btMLCPSolver falls back to sequential impulse for the step
-class RegularizedMLCPSolver : public btMLCPSolver
-{
-public:
-	RegularizedMLCPSolver(btMLCPSolverInterface* solver, double cfm, double retryFactor)
-		: btMLCPSolver(solver), m_cfm(btScalar(cfm)), m_retryFactor(btScalar(retryFactor))
-	{
-	}
-	int retries() const { return m_retries; }
-
-protected:
-	bool solveMLCP(const btContactSolverInfo& infoGlobal) override
-	{
-		addToDiagonal(m_cfm / infoGlobal.m_timeStep);
-		const bool solved = btMLCPSolver::solveMLCP(infoGlobal);
-		if (solved || !(m_cfm > 0 && m_retryFactor > 1)) return solved;
-		m_retries++;
-		addToDiagonal((m_retryFactor - 1) * m_cfm / infoGlobal.m_timeStep);
-		return btMLCPSolver::solveMLCP(infoGlobal);
-	}
-
-private:
-	void addToDiagonal(btScalar value)
-	{
-		if (value > 0)
-			for (int i = 0; i < m_A.rows(); ++i) m_A.setElem(i, i, m_A(i, i) + value);
-	}
-	btScalar m_cfm, m_retryFactor;
-	int m_retries = 0;
-};
-}  // namespace
-
-OwnedSolver::OwnedSolver(SolverKind kind, double mlcpMaxImpulse_ns, double mlcpCfm, double mlcpRetryCfmFactor)
+OwnedSolver::OwnedSolver(SolverKind kind)
 {
 	switch (kind)
 	{
@@ -140,18 +94,16 @@ OwnedSolver::OwnedSolver(SolverKind kind, double mlcpMaxImpulse_ns, double mlcpC
 			m_solver = std::make_unique<btDirectJointSolver>();
 			return;
 		case SolverKind::MlcpDantzig:
-			m_mlcp = std::make_unique<LimitedDantzigSolver>(mlcpMaxImpulse_ns);
+			m_mlcp = std::make_unique<btDantzigSolver>();
 			break;
 		case SolverKind::MlcpProjectedGaussSeidel:
 			m_mlcp = std::make_unique<btSolveProjectedGaussSeidel>();
 			break;
 	}
-	m_solver = std::make_unique<RegularizedMLCPSolver>(m_mlcp.get(), mlcpCfm, mlcpRetryCfmFactor);
+	m_solver = std::make_unique<btMLCPSolver>(m_mlcp.get());
 }
 
 OwnedSolver::~OwnedSolver() = default;
-
-int OwnedSolver::retries() const { return m_mlcp ? static_cast<const RegularizedMLCPSolver*>(m_solver.get())->retries() : 0; }
 
 int OwnedSolver::fallbacks() const
 {
@@ -169,18 +121,6 @@ void configureWorld(btDynamicsWorld& world, const WorldSolverSettings& settings)
 	if (!(settings.erp > 0 && settings.erp <= 1))
 	{
 		throw std::invalid_argument("erp: " + std::to_string(settings.erp) + " is not in (0, 1]");
-	}
-	if (!(settings.mlcp_cfm >= 0 && settings.mlcp_cfm <= 1))
-	{
-		throw std::invalid_argument("mlcp cfm: " + std::to_string(settings.mlcp_cfm) + " is not in [0, 1]");
-	}
-	if (!(settings.mlcp_retry_cfm_factor >= 0 && settings.mlcp_retry_cfm_factor <= 1e6))
-	{
-		throw std::invalid_argument("mlcp retry cfm factor: " + std::to_string(settings.mlcp_retry_cfm_factor) + " is not in [0, 1e6]");
-	}
-	if (!(settings.mlcp_max_impulse_ns > 0))
-	{
-		throw std::invalid_argument("mlcp max impulse: " + std::to_string(settings.mlcp_max_impulse_ns) + " N s is not > 0");
 	}
 	btContactSolverInfo& info = world.getSolverInfo();
 	info.m_numIterations = settings.iterations;

@@ -45,39 +45,25 @@ bool parseSolverKind(const std::string& name, SolverKind& kind);
 
 struct WorldSolverSettings
 {
-	// the toolkit default: a direct solve, so a chain holds at 10 iterations (report/GAME_SETTINGS.md)
-	SolverKind solver = SolverKind::MlcpDantzig;
+	// the toolkit default: btDirectJointSolver, so a structure holds at 10 iterations (report/GAME_SETTINGS.md)
+	SolverKind solver = SolverKind::DirectJoint;
 	int iterations = 10;                     // btContactSolverInfo::m_numIterations (Bullet's default 10)
 	double internal_step_s = 1.0 / 240.0;    // fixed internal step: four per 60 Hz frame
 	double erp = 0.2;                        // btContactSolverInfo::m_erp (joints' Baumgarte factor), Bullet's default
 	bool randomize_order = false;            // SOLVER_RANDMIZE_ORDER
-	// btMLCPSolver: constraint force mixing of the direct solve only, mlcp_cfm / dt added to the diagonal of its
-	// matrix as btContactSolverInfo::m_globalCfm would be (its sequential-impulse fallback and the other solvers
-	// are untouched). Closed loops (a portal frame fixed at both bases, a beam on two supports) have redundant
-	// rows; without it their matrix is singular, Dantzig fails in most steps and each such step is solved by
-	// sequential impulse instead (report/STRUCTURES.md). 0 = upstream.
-	double mlcp_cfm = 1e-8;
-	// when the direct solve still fails (Dantzig's pivoting stalls on degenerate rows at their bounds, as the
-	// elastic-plastic joints' in a few steps of a portal), it is tried once more with this factor times mlcp_cfm
-	// before btMLCPSolver falls back to sequential impulse for the step; <= 1: no retry
-	double mlcp_retry_cfm_factor = 10;
-	// btDantzigSolver rejects a solution with an impulse of this size or more (N s) and the step falls back to
-	// sequential impulse; upstream's limit is 1000 N s
-	double mlcp_max_impulse_ns = 1000.0;
 };
 
-// A constraint solver of a kind; it owns the MLCP interface it needs.
+// A constraint solver of a kind, constructed as Bullet's are (btMLCPSolver with upstream's btDantzigSolver or
+// btSolveProjectedGaussSeidel, no setting); it owns the MLCP interface it needs.
 class OwnedSolver
 {
 public:
-	explicit OwnedSolver(SolverKind kind, double mlcpMaxImpulse_ns = 1000.0, double mlcpCfm = 0.0, double mlcpRetryCfmFactor = 0.0);
+	explicit OwnedSolver(SolverKind kind);
 	~OwnedSolver();
 	btConstraintSolver* get() { return m_solver.get(); }
 	// steps in which the MLCP solver failed and fell back to sequential impulse (btMLCPSolver::getNumFallbacks, and
 	// btDirectJointSolver::getNumFallbacks); 0 for SI
 	int fallbacks() const;
-	// steps in which the direct solve was tried a second time with the larger CFM (WorldSolverSettings::mlcp_retry_cfm_factor)
-	int retries() const;
 
 private:
 	std::unique_ptr<btMLCPSolverInterface> m_mlcp;
@@ -98,7 +84,6 @@ public:
 	StructureWorld& operator=(const StructureWorld&) = delete;
 	btDiscreteDynamicsWorld& world() { return *m_world; }
 	int solverFallbacks() const { return m_solver.fallbacks(); }
-	int solverRetries() const { return m_solver.retries(); }
 	const WorldSolverSettings& settings() const { return m_settings; }
 	// stepSimulation(frame, enough substeps, internal step); returns the internal steps taken
 	int stepFrame(double frame_s);

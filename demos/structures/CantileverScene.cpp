@@ -158,7 +158,6 @@ CantileverResult CantileverScene::result() const
 	r.booked_plastic_work_j = s.beam.plasticWork_j();
 	r.energy_balance_error_pct = r.load_work_j > 0 ? 100.0 * (r.load_work_j - r.kinetic_j - r.geometric_plastic_work_j) / r.load_work_j : 0.0;
 	r.solver_fallbacks = s.rig.solverFallbacks();
-	r.solver_retries = s.rig.solverRetries();
 	r.steps = s.rig.steps();
 	r.simulated_s = s.rig.time_s();
 	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - s.start).count();

@@ -61,7 +61,6 @@ struct DropWeightResult
 	double plastic_work_error_pct = 0;  // geometric plastic work against the estimate of the kinetic energy after impact
 	double balance_error_pct = 0;       // (kinetic after impact - kinetic at the end - geometric plastic work) / kinetic after impact
 	int solver_fallbacks = 0;           // internal steps in which btMLCPSolver fell back to sequential impulse
-	int solver_retries = 0;             // internal steps whose direct solve was tried again with a larger CFM
 	long steps = 0;
 	double simulated_s = 0;
 	double wall_s = 0;

@@ -238,7 +238,6 @@ DropWeightResult DropWeightScene::result() const
 	r.plastic_work_error_pct = 100 * (r.geometric_plastic_work_j - a.kinetic_after_impact_j) / a.kinetic_after_impact_j;
 	r.balance_error_pct = 100 * (r.kinetic_after_impact_j - r.kinetic_end_j - r.geometric_plastic_work_j) / r.kinetic_after_impact_j;
 	r.solver_fallbacks = s.rig.solverFallbacks();
-	r.solver_retries = s.rig.solverRetries();
 	r.steps = s.rig.steps();
 	r.simulated_s = s.rig.time_s();
 	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - s.start).count();

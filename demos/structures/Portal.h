@@ -83,7 +83,6 @@ struct PortalResult
 	double geometric_plastic_work_j = 0;  // Mp x sum |site rotation| from the bodies
 	int holds = 0;                        // ramp: how many times the load was held (more than one: softening or vibration was not a collapse)
 	int solver_fallbacks = 0;             // internal steps in which btMLCPSolver fell back to sequential impulse
-	int solver_retries = 0;               // internal steps whose direct solve was tried again with a larger CFM
 	long steps = 0;
 	double simulated_s = 0;
 	double wall_s = 0;

@@ -199,7 +199,6 @@ PortalResult PortalScene::result() const
 	for (const plastic::Joint* j : s.joints) r.booked_plastic_work_j += j->plasticWork_j();
 	for (double x : r.rotations_rad) r.geometric_plastic_work_j += mp * std::fabs(x);
 	r.solver_fallbacks = s.rig.solverFallbacks();
-	r.solver_retries = s.rig.solverRetries();
 	r.steps = s.rig.steps();
 	r.simulated_s = s.rig.time_s();
 	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - s.start).count();

@@ -29,9 +29,6 @@ std::vector<std::string> validateSolverSettings(const SolverSettings& s)
 	requireRange(errors, "dt", s.world.internal_step_s, 1e-6, 0.05, "s");
 	requireWhole(errors, "iterations", s.world.iterations, 1, 100000);
 	requireRange(errors, "erp", s.world.erp, 1e-6, 1, "");
-	requireRange(errors, "mlcp-cfm", s.world.mlcp_cfm, 0, 1, "");
-	requireRange(errors, "mlcp-retry-cfm-factor", s.world.mlcp_retry_cfm_factor, 0, 1e6, "");
-	requireRange(errors, "mlcp-max-impulse", s.world.mlcp_max_impulse_ns, 1e-9, 1e30, "N s");
 	return errors;
 }
 

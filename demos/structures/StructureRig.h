@@ -64,7 +64,6 @@ public:
 	// internal steps in which btMLCPSolver's direct solve failed and it used sequential impulse instead (0 for SI)
 	int solverFallbacks() const { return m_world.solverFallbacks(); }
 	// internal steps in which the direct solve was tried again with a larger CFM (and then did not fall back unless counted above)
-	int solverRetries() const { return m_world.solverRetries(); }
 
 	void beforeEachStep(std::function<void(double step_s)> callback) { m_before.push_back(std::move(callback)); }
 	void afterEachStep(std::function<void()> callback) { m_after.push_back(std::move(callback)); }

@@ -71,25 +71,15 @@ Flags<P> commonFlags()
 				   "NAME  joint method: hinge-motor, plastic-hinge, elastic-plastic, elastic-plastic2; default plastic-hinge"};
 	f["solver"] = {[](P& p, const std::string& t)
 				   { return plastic::parseSolverKind(t, p.solver.world.solver); },
-				   "NAME  constraint solver: dantzig (btMLCPSolver + btDantzigSolver, a direct solve; the toolkit default), "
-				   "direct (btDirectJointSolver, patch 0019: joint rows solved directly along the joint graph), "
+				   "NAME  constraint solver: direct (btDirectJointSolver, patch 0019: joint rows solved directly along the joint graph; the toolkit default), "
+				   "dantzig (btMLCPSolver + btDantzigSolver as upstream constructs them), "
 				   "sequential-impulse (upstream's btSequentialImpulseConstraintSolver), pgs (btMLCPSolver + projected Gauss-Seidel)"};
 	f["dt"] = {[](P& p, const std::string& t)
 			   { return parseNumber(t, p.solver.world.internal_step_s); },
 			   "SECONDS  internal step, default 1/240 (four per 60 Hz frame)"};
 	f["iterations"] = {[](P& p, const std::string& t)
 					   { return parseInteger(t, p.solver.world.iterations); },
-					   "N  solver iterations, default 10 (sequential impulse and pgs; dantzig uses them only in a step where its direct solve fails)"};
-	f["mlcp-cfm"] = {[](P& p, const std::string& t)
-					 { return parseNumber(t, p.solver.world.mlcp_cfm); },
-					 "VALUE  dantzig, pgs: constraint force mixing of the direct solve only (cfm / dt on its matrix' diagonal), default 1e-8; 0: upstream "
-					 "(closed loops' redundant rows then make Dantzig fail and fall back to sequential impulse)"};
-	f["mlcp-retry-cfm-factor"] = {[](P& p, const std::string& t)
-								  { return parseNumber(t, p.solver.world.mlcp_retry_cfm_factor); },
-								  "FACTOR  dantzig: a step whose direct solve fails is solved again with this times --mlcp-cfm before it falls back to sequential impulse, default 10; <= 1: no retry"};
-	f["mlcp-max-impulse"] = {[](P& p, const std::string& t)
-							 { return parseNumber(t, p.solver.world.mlcp_max_impulse_ns); },
-							 "N_S  dantzig: a solution with a larger impulse is rejected and the step falls back to sequential impulse, default 1000 (upstream)"};
+					   "N  solver iterations, default 10 (sequential impulse and pgs; direct: the friction passes; dantzig and direct use them only in a step where the direct solve fails)"};
 	f["erp"] = {[](P& p, const std::string& t)
 				{ return parseNumber(t, p.solver.world.erp); },
 				"FRACTION  the joints' error reduction parameter, default 0.2 (Bullet's)"};

@@ -163,8 +163,10 @@ TEST(DirectJointSolver, BeamClampedAtBothEndsHoldsBelowCollapseAndFormsThreeHing
 	const BeamResult hold = runBeam(b, 0.9);
 	EXPECT_LT(std::fabs(hold.root_rotation_rad), 1e-4);
 	EXPECT_LT(std::fabs(hold.tip_drop_m), 1e-4);
-	// which rows carry the redundant load is not unique; at 0.9 some joints end at their cap, but they do not turn
-	EXPECT_LT(hold.booked_j, 1e-3 * b.plastic_moment_nm) << hold.yielded << " joints at their cap";
+	// which rows carry the redundant load is not unique: plastic analysis allows any end moment with M_end + M_mid =
+	// 1.8 Mp, the elastic beam has 0.9 Mp at both. The solver's relative compliance puts the ends at their cap, and
+	// they shed load to mid-span by turning 3e-5 rad in 3 s: that is all it may book
+	EXPECT_LT(hold.booked_j, 1e-4 * b.plastic_moment_nm) << hold.yielded << " joints at their cap";
 	EXPECT_EQ(hold.fallbacks, 0);
 	const BeamResult fall = runBeam(b, 1.05);
 	EXPECT_EQ(fall.yielded, 3);

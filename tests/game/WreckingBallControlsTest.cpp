@@ -17,7 +17,6 @@ TEST(WreckingBallControls, StartAtTheRunnersDefaults)
 	EXPECT_EQ(p.impact_height_m, d.impact_height_m);
 	EXPECT_EQ(p.solver.solver, d.solver.solver);
 	EXPECT_EQ(p.solver.iterations, d.solver.iterations);
-	EXPECT_EQ(p.solver.mlcp_cfm, d.solver.mlcp_cfm);
 }
 
 TEST(WreckingBallControls, EverySliderRangeBuilds)
