@@ -4,8 +4,8 @@
   ci/structures_report.py [--runner=build/bin/structures] [--out=report/STRUCTURES.md] [--jobs=2] [--command=TEXT]
 
 Runs build/bin/structures for every case below, every joint method of the factory (the upstream hinge-motor
-stand-in among them), both solvers (upstream's sequential impulse and the toolkit's default, btMLCPSolver +
-Dantzig), internal steps 1/60, 1/120, 1/240, 1/480 s and 1 ms at 10 and 50 iterations, plus the converged setting
+stand-in among them), three solvers (upstream's sequential impulse, btMLCPSolver + Dantzig as upstream constructs
+it, and the toolkit's default, btDirectJointSolver of patch 0019), internal steps 1/60, 1/120, 1/240, 1/480 s and 1 ms at 10 and 50 iterations, plus the converged setting
 the tests use; then the game-settings summary (1/240 s, 10 iterations: collapse, holds at 0.9 of the collapse load
 for 3 s, energy, fallbacks, cost per step). Writes OUT (markdown) whole (tmp file + rename): the error against the
 plastic-analysis answer, whether the predicted mechanism formed, and the wall time of each run.
@@ -21,7 +21,7 @@ import time
 
 METHODS = ["hinge-motor", "plastic-hinge", "elastic-plastic", "elastic-plastic2"]
 # runner --solver name, label in the tables
-SOLVERS = [("sequential-impulse", "sequential impulse"), ("dantzig", "Dantzig")]
+SOLVERS = [("sequential-impulse", "sequential impulse"), ("dantzig", "Dantzig"), ("direct", "direct")]
 GAME = ("1/240 s", 1 / 240, 10)
 STEPS = [("1/60 s", 1 / 60), ("1/120 s", 1 / 120), ("1/240 s", 1 / 240), ("1/480 s", 1 / 480), ("1 ms", 1e-3)]
 ITERATIONS = [10, 50]
@@ -133,7 +133,7 @@ def summary_rows(results, converged_cell):
                 us = 1e6 * d["wall_s"] / steps if steps else float("nan")
                 cost = ("%.0f" % us, "%.0f" % (4 * us)) if steps >= 100 else ("(%d steps)" % steps, "")
                 rows.append([case[0], m, slabel, err, mech, hold, creep, "n/a (not booked)" if m == "hinge-motor" else pct(gain),
-                             "%d / %d" % (d.get("solver_retries", 0), d.get("solver_fallbacks", 0)), cost[0], cost[1], converged_cell(ci, m, s)])
+                             "%d" % d.get("solver_fallbacks", 0), cost[0], cost[1], converged_cell(ci, m, s)])
     return rows
 
 
@@ -180,11 +180,11 @@ def main():
         "when a joint runs away, confirmed when the held load turns the mechanism 0.05 rad; a structure that sags or creeps",
         "before its collapse load shows a negative error; `none, sagged X rad`: no collapse was confirmed within the run's",
         "duration but its joints crept that far under loads that rose past the answer. Rotations and work are measured on the bodies, not read from the",
-        "joints' bookkeeping. Solvers: upstream's `btSequentialImpulseConstraintSolver` and the toolkit's default,",
-        "`btMLCPSolver` + `btDantzigSolver` (`plastic::WorldSolverSettings`, runner `--solver=dantzig`: a direct solve, CFM",
-        "1e-8 on its matrix only, one retry at 10x that CFM when the solve fails; iterations are used only by a step that",
-        "falls back to sequential impulse). `[N SI fallbacks]`: steps in which the direct solve failed twice and the step",
-        "was solved by sequential impulse. `converged`: the setting the tests use (1 ms and 1000 iterations for the",
+        "joints' bookkeeping. Solvers: upstream's `btSequentialImpulseConstraintSolver`, `btMLCPSolver` + `btDantzigSolver`",
+        "as upstream constructs them (runner `--solver=dantzig`: a dense direct solve; iterations are used only by a step",
+        "that falls back to sequential impulse), and the toolkit's default, `btDirectJointSolver` (patch 0019, runner",
+        "`--solver=direct`: the joint and contact rows solved directly along the joint graph, no setting).",
+        "`[N SI fallbacks]`: steps in which the direct solve failed and the step was solved by sequential impulse. `converged`: the setting the tests use (1 ms and 1000 iterations for the",
         "cantilever, 1 ms and 200 for the portal, 0.1 ms and 1000 for the drop weight), with each solver. Reproduce one cell with",
         "`build/bin/structures <case flags> --solver=S --method=M --dt=DT --iterations=N --json`.",
         "",
@@ -205,19 +205,19 @@ def main():
         "load, and portal, from the collapse run: (kinetic + booked - load work) / load work; drop weight: (kinetic at the end",
         "+ booked - the ball's kinetic energy) / the latter (its impact is inelastic: a few percent lost at least). Negative:",
         "lost, not gained; elastic energy is left out (0 for rigid-plastic joints). The hinge-motor stand-in books nothing.",
-        "**retries / fallbacks**: steps whose direct solve was retried with 10x the CFM / fell back to sequential impulse.",
+        "**fallbacks**: steps whose direct solve failed and fell back to sequential impulse.",
         "**us/step**: the run's wall time per internal step (the scene's own bookkeeping included; a shared 2-core machine,",
         "compare within one run; not shown for runs under 100 steps, which the set-up dominates;",
         "`build/bin/game_settings_benchmarks` measures the step alone, report/GAME_SETTINGS.md).",
         "",
-        "| scene | method | solver | error | mechanism | hold 0.9, 3 s: largest rotation | creep 1-3 s | energy gain | retries / fallbacks | us/step | us/frame (x4) | converged |",
+        "| scene | method | solver | error | mechanism | hold 0.9, 3 s: largest rotation | creep 1-3 s | energy gain | fallbacks | us/step | us/frame (x4) | converged |",
         "|" + " --- |" * 12,
     ]
     for row in summary_rows(results, converged_cell):
         lines.append("| " + " | ".join(row) + " |")
     lines += [
         "",
-        "The drop weight misses the 3 % target at 1/240 s with either solver and every method: the plastic phase after",
+        "The drop weight misses the 3 % target at 1/240 s with every solver and method: the plastic phase after",
         "the impact lasts about 22 internal steps (simply supported) or 6 (clamped), and Bullet's semi-implicit Euler moves",
         "each step with the velocity at its end, so the rotations come out short by a first-order step error (about half",
         "at 1/480 s; with Dantzig and the rigid-plastic methods -3.7 % / -4.6 % at 1/960 s, -2.0 % / -2.8 % at 1/3840 s).",
