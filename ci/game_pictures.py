@@ -3,7 +3,7 @@
 
   ci/game_pictures.py --history=history.csv --joints=joints.csv --frames=DIR --out-dir=DIR [--fps=N]
 
-Writes DIR/wrecking-ball.gif (the frames PREFIX<n>.png of --frames in the order of n), DIR/energy.png (gravity work,
+Writes DIR/wrecking-ball.gif (or --gif-name; the frames PREFIX<n>.png of --frames in the order of n), DIR/energy.png (gravity work,
 kinetic energy, plastic energy booked by the joints and measured from the bodies, dissipated, against time) and
 DIR/joint-energy.png (each joint's plastic energy, broken joints marked). Every file is written whole (a temporary
 file, then renamed). An MP4 is not made: Debian's ffmpeg is not among the project's dependencies.
@@ -55,7 +55,26 @@ def energy_plot(rows, path):
     save(fig, path)
 
 
+# more joints than this: only those that booked at least 1 % of the largest are drawn (a building's hundreds)
+MAX_JOINTS_SHOWN = 40
+
+
+def shown_joints(rows):
+    """The joints the per-joint plot draws: all of them, or past MAX_JOINTS_SHOWN those that booked 1 % of the largest."""
+    if len(rows) <= MAX_JOINTS_SHOWN:
+        return rows
+    largest = max(float(r["booked_work_J"]) for r in rows)
+    if not largest > 0:
+        return rows[:MAX_JOINTS_SHOWN]
+    return [r for r in rows if float(r["booked_work_J"]) >= 0.01 * largest]
+
+
 def joint_plot(rows, path):
+    title = "Wrecking ball: plastic energy per joint (red: broken)"
+    shown = shown_joints(rows)
+    if len(shown) < len(rows):
+        title = "Wrecking ball: plastic energy of the %d of %d joints with 1 %% of the largest or more (red: broken)" % (len(shown), len(rows))
+    rows = shown
     names = [r["joint"] for r in rows]
     booked = [float(r["booked_work_J"]) / 1e3 for r in rows]
     broken = [r["broken"] == "1" for r in rows]
@@ -64,7 +83,7 @@ def joint_plot(rows, path):
     ax.set_xticks(range(len(names)))
     ax.set_xticklabels(names, rotation=60, ha="right", fontsize=8)
     ax.set_ylabel("plastic energy [kJ]")
-    ax.set_title("Wrecking ball: plastic energy per joint (red: broken)")
+    ax.set_title(title, fontsize=10)
     ax.grid(True, axis="y", alpha=0.3)
     fig.tight_layout()
     save(fig, path)
@@ -94,6 +113,7 @@ def main(argv=None):
     parser.add_argument("--frames", required=True)
     parser.add_argument("--out-dir", required=True)
     parser.add_argument("--fps", type=float, default=30.0)
+    parser.add_argument("--gif-name", default="wrecking-ball.gif", help="the animation's file name in --out-dir")
     args = parser.parse_args(argv)
     if not 0.5 <= args.fps <= 100:
         raise SystemExit(f"game_pictures: --fps: {args.fps} is not in [0.5, 100]")
@@ -102,8 +122,8 @@ def main(argv=None):
     os.makedirs(args.out_dir, exist_ok=True)
     energy_plot(history, os.path.join(args.out_dir, "energy.png"))
     joint_plot(joints, os.path.join(args.out_dir, "joint-energy.png"))
-    n = animation(args.frames, os.path.join(args.out_dir, "wrecking-ball.gif"), args.fps)
-    print(f"wrote energy.png, joint-energy.png, wrecking-ball.gif ({n} frames) to {args.out_dir}")
+    n = animation(args.frames, os.path.join(args.out_dir, args.gif_name), args.fps)
+    print(f"wrote energy.png, joint-energy.png, {args.gif_name} ({n} frames) to {args.out_dir}")
 
 
 if __name__ == "__main__":

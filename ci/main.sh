@@ -11,6 +11,8 @@
 #                                           bodies, per-joint plastic energies, broken joints, real-time factor)
 #   frames/frame<n>.png, wrecking-ball.gif  the ExampleBrowser app through OSMesa, every second 60 Hz frame
 #   energy.png, joint-energy.png            energies against time, plastic energy per joint
+# and the same ball against a building of five storeys and four bays (200 plastic joints) to build/building-report/
+#   (the same files; the animation is building.gif)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/deps.sh
@@ -44,3 +46,15 @@ mkdir -p "$game/frames"
 	--png_file=frame --png_skip_frames=1 --fixed_timestep=0.0166667 --max_frames=180 --width=640 --height=400 >/dev/null)
 python3 ci/game_pictures.py --history="$game/history.csv" --joints="$game/joints.csv" --frames="$game/frames" --out-dir="$game" --fps=30
 echo "report written to $game/ (summary.txt, result.json, joints.csv, history.csv, frames/, wrecking-ball.gif, energy.png, joint-energy.png)"
+
+# the building: the same ball against five storeys and four bays (200 plastic joints in one island)
+building="$build/building-report"
+rm -rf "$building"
+mkdir -p "$building/frames"
+"$build/bin/wrecking_ball" --storeys=5 --bays=4 --joints-csv="$building/joints.csv" --history="$building/history.csv" > "$building/summary.txt"
+head -n 3 "$building/summary.txt"
+"$build/bin/wrecking_ball" --storeys=5 --bays=4 --json > "$building/result.json.tmp" && mv "$building/result.json.tmp" "$building/result.json"
+(cd "$building/frames" && "$bin/plasticity_browser" --window_backend=osmesa "--start_demo_name=Building" --nogui \
+	--png_file=frame --png_skip_frames=1 --fixed_timestep=0.0166667 --max_frames=180 --width=640 --height=400 >/dev/null)
+python3 ci/game_pictures.py --history="$building/history.csv" --joints="$building/joints.csv" --frames="$building/frames" --out-dir="$building" --fps=30 --gif-name=building.gif
+echo "report written to $building/ (summary.txt, result.json, joints.csv, history.csv, frames/, building.gif, energy.png, joint-energy.png)"

@@ -174,3 +174,8 @@ CommonExampleInterface* WreckingBallExampleCreateFunc(CommonExampleOptions& opti
 {
 	return new StructureExample(options.m_guiHelper, game::wreckingBallControls(), options.m_option);
 }
+
+CommonExampleInterface* BuildingExampleCreateFunc(CommonExampleOptions& options)
+{
+	return new StructureExample(options.m_guiHelper, game::buildingControls(), options.m_option);
+}

@@ -10,3 +10,4 @@ CommonExampleInterface* CantileverExampleCreateFunc(CommonExampleOptions& option
 CommonExampleInterface* PortalExampleCreateFunc(CommonExampleOptions& options);
 CommonExampleInterface* DropWeightExampleCreateFunc(CommonExampleOptions& options);
 CommonExampleInterface* WreckingBallExampleCreateFunc(CommonExampleOptions& options);
+CommonExampleInterface* BuildingExampleCreateFunc(CommonExampleOptions& options);

@@ -16,9 +16,7 @@
 
 namespace game
 {
-// The toolkit's game defaults (direct solve, 10 iterations, 1/240 s) with a global CFM of 1e-7: the frame is fixed at
-// both bases, a closed loop whose redundant rows make the direct solve's matrix singular; 1e-7 regularises it (at
-// 1e-9 the solve fails and falls back to sequential impulse, at 1e-10 the run blows up; 1e-5 already softens the frame).
+// The toolkit's game defaults (btDirectJointSolver, 10 iterations, 1/240 s): the frame's closed loops need no setting.
 plastic::WorldSolverSettings wreckingBallSolverSettings();
 
 struct WreckingBallParameters
@@ -28,7 +26,11 @@ struct WreckingBallParameters
 	double frame_rate_hz = 60;
 	double duration_s = 3.0;
 	double gravity_m_s2 = 9.81;
-	// the frame: two columns of height_m at x = 0 and x = span_m, a beam between their tops, in the x-y plane
+	// the frame, in the x-y plane: bays + 1 column lines at x = 0, span_m, .., storeys storeys of height_m, a beam of
+	// every bay at every floor; each member in segments, joined to the others at the nodes (the top segment of a
+	// column's storey). One storey and one bay (the default) is a fixed-base portal frame.
+	int storeys = 1;
+	int bays = 1;
 	double span_m = 4.0;
 	double height_m = 3.0;
 	int column_segments = 4;  // the joints between segments are where the members can bend
@@ -68,7 +70,10 @@ WreckingBallEstimate wreckingBallEstimate(const WreckingBallParameters& p);
 // One plastic joint of the frame after a run.
 struct FrameJointResult
 {
-	std::string name;  // base-left, column-left-1.., knee-left, beam-1.., knee-right, column-right-1.., base-right
+	// a portal: base-left, column-left-1.., knee-left, beam-1.., knee-right, column-right-1.., base-right; more storeys
+	// or bays: base-C, column-C-K-J (column line C from 0, storey K from 1, joint J of the member from its foot),
+	// beam-K-B-J (floor K, bay B from 1, J from the left node; -end at the right node)
+	std::string name;
 	double plastic_moment_nm = 0;
 	double booked_rotation_rad = 0;    // accumulated plastic rotation the joint booked (0: hinge-motor stand-in)
 	double measured_rotation_rad = 0;  // its rotation measured from the bodies (at the step it broke, if it broke)

@@ -64,6 +64,8 @@ const std::map<std::string, Flag>& flags()
 		{"gravity", number(&P::gravity_m_s2, "M_S2  default 9.81")},
 		{"span", number(&P::span_m, "M  default 4")},
 		{"height", number(&P::height_m, "M  default 3")},
+		{"storeys", whole(&P::storeys, "N  storeys of the frame, default 1")},
+		{"bays", whole(&P::bays, "N  bays of the frame, default 1")},
 		{"column-segments", whole(&P::column_segments, "N  default 4")},
 		{"beam-segments", whole(&P::beam_segments, "N  default 4")},
 		{"section-depth", number(&P::section_depth_m, "M  I section depth, default 0.2")},

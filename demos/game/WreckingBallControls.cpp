@@ -44,4 +44,30 @@ structures::ControlledScene wreckingBallControls()
 	c.time_scale = 1;
 	return c;
 }
+
+WreckingBallParameters buildingFromSliders(const std::vector<float>& v, plastic::JointMethod method)
+{
+	if (v.size() != 10) throw std::invalid_argument("building sliders: " + std::to_string(v.size()) + " values, expected 10");
+	WreckingBallParameters p = wreckingBallFromSliders(std::vector<float>(v.begin(), v.begin() + 8), method);
+	p.storeys = int(std::lround(double(v[8])));
+	p.bays = int(std::lround(double(v[9])));
+	return p;
+}
+
+structures::ControlledScene buildingControls()
+{
+	structures::ControlledScene c = wreckingBallControls();
+	c.name = "building";
+	c.sliders.push_back({"storeys", 1, 10, true, 5});
+	c.sliders.push_back({"bays", 1, 8, true, 4});
+	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<structures::SteppedScene>
+	{ return std::make_unique<WreckingBallScene>(buildingFromSliders(v, m)); };
+	// the default building (5 storeys of 3 m, 4 bays of 4 m) from +z, the ball coming from the left
+	c.camera_distance_m = 21;
+	c.camera_yaw_deg = 180;
+	c.camera_pitch_deg = -8;
+	c.camera_target_m[0] = 22;
+	c.camera_target_m[1] = 10.5f;
+	return c;
+}
 }  // namespace game

@@ -10,4 +10,7 @@ namespace game
 {
 WreckingBallParameters wreckingBallFromSliders(const std::vector<float>& values, plastic::JointMethod method);
 structures::ControlledScene wreckingBallControls();
+// The same scene with a building: the wrecking ball's sliders, then storeys and bays (default 5 and 4: 200 joints)
+WreckingBallParameters buildingFromSliders(const std::vector<float>& values, plastic::JointMethod method);
+structures::ControlledScene buildingControls();
 }  // namespace game

@@ -22,6 +22,8 @@ std::vector<std::string> validateWreckingBallParameters(const WreckingBallParame
 	requireRange(e, "frame-rate", p.frame_rate_hz, 1, 1000, "Hz");
 	requireRange(e, "duration", p.duration_s, 0.01, 600, "s");
 	requireRange(e, "gravity", p.gravity_m_s2, 0.1, 100, "m/s2");
+	requireWhole(e, "storeys", p.storeys, 1, 20);
+	requireWhole(e, "bays", p.bays, 1, 20);
 	requireRange(e, "span", p.span_m, 0.5, 100, "m");
 	requireRange(e, "height", p.height_m, 0.5, 100, "m");
 	requireWhole(e, "column-segments", p.column_segments, 1, 64);

@@ -1,5 +1,6 @@
-// The wrecking ball scene: the frame from the toolkit (three members and a base joint, like a fixed-base portal),
-// the ball on a chain of links, the ground; stepped in 60 Hz frames; measured from the bodies after every internal
+// The wrecking ball scene: the frame from the toolkit (columns of every storey and beams of every bay, members of
+// segments joined at their nodes; one storey and one bay is a fixed-base portal), the ball on a chain of links, the
+// ground; stepped in 60 Hz frames; measured from the bodies after every internal
 // step (a tick callback that only reads the world).
 #include <algorithm>
 #include <chrono>
@@ -28,6 +29,8 @@ std::unique_ptr<btRigidBody> makeBody(double mass_kg, btCollisionShape& shape, c
 	return std::make_unique<btRigidBody>(info);
 }
 
+// the frame's bodies: they collide with the ball and the ground, not with each other
+const int kFrameGroup = 1 << 6;
 }  // namespace
 
 struct WreckingBallScene::State
@@ -61,13 +64,16 @@ struct WreckingBallScene::State
 	plastic::StructureWorld structure;
 	plastic::EnergyLedger ledger;  // every moving body and every joint
 	plastic::EnergyLedger swing;   // the ball and its chain
-	// the ground: a static slab whose top is y = 0
-	btBoxShape groundShape{btVector3(20, 0.5, 20)};
+	// the ground: a static slab whose top is y = 0, under the whole frame
+	std::unique_ptr<btBoxShape> groundShape;
 	std::unique_ptr<btRigidBody> ground;
-	std::unique_ptr<plastic::Beam> columnLeft, beam, columnRight;
-	plastic::JointSpec baseSpec;
-	plastic::Joint base;
-	std::vector<const plastic::Joint*> joints;  // along the frame: base-left .. base-right
+	// columns[c][k]: column line c (x = c span), storey k, from its foot up; beams[k][b]: floor k + 1, bay b, left to
+	// right, with its end joint to the right column's node (the top segment of that column's storey)
+	std::vector<std::vector<std::unique_ptr<plastic::Beam>>> columns;
+	std::vector<std::vector<std::unique_ptr<plastic::Beam>>> beams;
+	std::vector<plastic::JointSpec> endSpecs;
+	std::vector<plastic::Joint> endJoints;
+	std::vector<const plastic::Joint*> joints;  // one storey and bay: along the frame, base-left .. base-right
 	std::vector<std::string> names;
 	std::vector<structures::JointSite> sites;
 	std::vector<std::unique_ptr<structures::PlanarAngle>> bodyAngles;
@@ -137,66 +143,121 @@ WreckingBallScene::WreckingBallScene(const WreckingBallParameters& p)
 	State& s = *m;
 	btDiscreteDynamicsWorld& world = s.structure.world();
 	world.setGravity(btVector3(0, btScalar(-p.gravity_m_s2), 0));
-	s.ground = makeBody(0, s.groundShape, btTransform(btMatrix3x3::getIdentity(), btVector3(btScalar(p.span_m / 2), -0.5, 0)));
+	const btScalar L = btScalar(p.span_m), h = btScalar(p.height_m);
+	const int lines = p.bays + 1;
+	s.groundShape = std::make_unique<btBoxShape>(btVector3(std::max(btScalar(20), L * btScalar(p.bays)), 0.5, 20));
+	s.ground = makeBody(0, *s.groundShape, btTransform(btMatrix3x3::getIdentity(), btVector3(btScalar(p.span_m * p.bays / 2), -0.5, 0)));
 	world.addRigidBody(s.ground.get());
 
-	const btScalar L = btScalar(p.span_m), h = btScalar(p.height_m);
-	s.columnLeft = std::make_unique<plastic::Beam>(world, s.memberSpec(btVector3(0, 0, 0), btVector3(0, h, 0), p.column_segments), s.ground.get());
-	s.beam = std::make_unique<plastic::Beam>(world, s.memberSpec(btVector3(0, h, 0), btVector3(L, h, 0), p.beam_segments), s.columnLeft->segments().back());
-	s.columnRight = std::make_unique<plastic::Beam>(world, s.memberSpec(btVector3(L, h, 0), btVector3(L, 0, 0), p.column_segments), s.beam->segments().back());
-	s.baseSpec = s.columnRight->jointSpecs().back();
-	s.baseSpec.pivot_m = btVector3(L, 0, 0);
-	s.base = plastic::makeJoint(s.baseSpec, *s.columnRight->segments().back(), *s.ground);
-	world.addConstraint(s.base.constraint.get(), true);
-	for (const plastic::Beam* member : {s.columnLeft.get(), s.beam.get(), s.columnRight.get()})
-		for (size_t j = 0; j < member->joints().size(); j++) plastic::updateJointForStep(*member->joints()[j].constraint, member->jointSpecs()[j], p.solver.internal_step_s);
-	plastic::updateJointForStep(*s.base.constraint, s.baseSpec, p.solver.internal_step_s);
-
-	// the joints along the frame, each with the bodies it joins (the ground: no rotation) and a name
-	std::vector<const btRigidBody*> path = {nullptr};
-	for (const plastic::Beam* member : {s.columnLeft.get(), s.beam.get(), s.columnRight.get()})
-		for (btRigidBody* b : member->segments()) path.push_back(b);
-	path.push_back(nullptr);
-	for (const btRigidBody* b : path) s.bodyAngles.push_back(std::make_unique<structures::PlanarAngle>(b));
-	std::vector<btVector3> pivots;
-	for (const plastic::Beam* member : {s.columnLeft.get(), s.beam.get(), s.columnRight.get()})
-		for (size_t j = 0; j < member->joints().size(); j++)
-		{
-			s.joints.push_back(&member->joints()[j]);
-			pivots.push_back(member->jointSpecs()[j].pivot_m);
-		}
-	s.joints.push_back(&s.base);
-	pivots.push_back(s.baseSpec.pivot_m);
-	auto name = [&](size_t i) -> std::string
+	// a joint of the frame: the bodies it joins (nullptr: the ground), where, and its name
+	struct FrameJoint
 	{
-		const int c = p.column_segments, b = p.beam_segments;
-		const int k = int(i);
-		if (k == 0) return "base-left";
-		if (k < c) return "column-left-" + std::to_string(k);
-		if (k == c) return "knee-left";
-		if (k < c + b) return "beam-" + std::to_string(k - c);
-		if (k == c + b) return "knee-right";
-		if (k < 2 * c + b) return "column-right-" + std::to_string(k - c - b);
-		return "base-right";
+		const plastic::Joint* joint;
+		const btRigidBody* a;
+		const btRigidBody* b;
+		btVector3 pivot;
+		std::string name;
 	};
-	for (size_t i = 0; i < s.joints.size(); i++)
+	std::vector<FrameJoint> frame;
+	const bool portal = p.storeys == 1 && p.bays == 1;
+	auto addMember = [&](const plastic::Beam& member, const btRigidBody* support, const std::string& prefix)
 	{
-		s.names.push_back(name(i));
-		const btRigidBody* a = path[i];
-		const btRigidBody* b = path[i + 1];
-		s.angles.push_back({s.bodyAngles[i].get(), s.bodyAngles[i + 1].get()});
-		if (b)
-			s.sites.push_back(structures::jointSite(*s.joints[i], a, *b, pivots[i]));
-		else
-			s.sites.push_back(structures::jointSite(*s.joints[i], nullptr, *a, pivots[i]));
+		for (size_t j = 0; j < member.joints().size(); j++)
+		{
+			const btRigidBody* a = j == 0 ? support : member.segments()[j - 1];
+			frame.push_back({&member.joints()[j], a, member.segments()[j], member.jointSpecs()[j].pivot_m, prefix + "-" + std::to_string(j)});
+		}
+	};
+	s.columns.resize(size_t(lines));
+	s.beams.resize(size_t(p.storeys));
+	s.endSpecs.reserve(size_t(p.storeys * p.bays));
+	s.endJoints.reserve(size_t(p.storeys * p.bays));
+	for (int k = 0; k < p.storeys; k++)
+	{
+		for (int c = 0; c < lines; c++)
+		{
+			btRigidBody* support = k == 0 ? s.ground.get() : s.columns[size_t(c)][size_t(k - 1)]->segments().back();
+			s.columns[size_t(c)].push_back(std::make_unique<plastic::Beam>(world, s.memberSpec(btVector3(L * btScalar(c), h * btScalar(k), 0), btVector3(L * btScalar(c), h * btScalar(k + 1), 0), p.column_segments), support));
+			addMember(*s.columns[size_t(c)].back(), k == 0 ? nullptr : support, "column-" + std::to_string(c) + "-" + std::to_string(k + 1));
+		}
+		for (int b = 0; b < p.bays; b++)
+		{
+			btRigidBody* left = s.columns[size_t(b)][size_t(k)]->segments().back();
+			btRigidBody* right = s.columns[size_t(b + 1)][size_t(k)]->segments().back();
+			const btVector3 end(L * btScalar(b + 1), h * btScalar(k + 1), 0);
+			s.beams[size_t(k)].push_back(std::make_unique<plastic::Beam>(world, s.memberSpec(btVector3(L * btScalar(b), h * btScalar(k + 1), 0), end, p.beam_segments), left));
+			const plastic::Beam& beam = *s.beams[size_t(k)].back();
+			const std::string prefix = "beam-" + std::to_string(k + 1) + "-" + std::to_string(b + 1);
+			addMember(beam, left, prefix);
+			plastic::JointSpec spec = beam.jointSpecs().back();
+			spec.pivot_m = end;
+			s.endSpecs.push_back(spec);
+			s.endJoints.push_back(plastic::makeJoint(spec, *beam.segments().back(), *right));
+			world.addConstraint(s.endJoints.back().constraint.get(), true);
+			frame.push_back({&s.endJoints.back(), beam.segments().back(), right, end, prefix + "-end"});
+		}
+	}
+	for (const auto& line : s.columns)
+		for (const auto& member : line)
+			for (size_t j = 0; j < member->joints().size(); j++) plastic::updateJointForStep(*member->joints()[j].constraint, member->jointSpecs()[j], p.solver.internal_step_s);
+	for (const auto& floor : s.beams)
+		for (const auto& member : floor)
+			for (size_t j = 0; j < member->joints().size(); j++) plastic::updateJointForStep(*member->joints()[j].constraint, member->jointSpecs()[j], p.solver.internal_step_s);
+	for (size_t i = 0; i < s.endJoints.size(); i++) plastic::updateJointForStep(*s.endJoints[i].constraint, s.endSpecs[i], p.solver.internal_step_s);
+	// the members meet at the nodes, where segments of members that are not joined overlap: the frame does not collide
+	// with itself (the ball and the ground still collide with it)
+	for (const auto& group : {&s.columns, &s.beams})
+		for (const auto& row : *group)
+			for (const auto& member : row)
+				for (btRigidBody* body : member->segments())
+				{
+					world.removeRigidBody(body);
+					world.addRigidBody(body, kFrameGroup, btBroadphaseProxy::AllFilter & ~kFrameGroup);
+				}
+
+	if (portal)
+	{
+		// the portal's joints along the frame, named as the frame's joints always were: base-left, column-left-1..,
+		// knee-left, beam-1.., knee-right, column-right-1.. (from the knee down), base-right
+		const int n = p.column_segments, m = p.beam_segments;
+		std::vector<FrameJoint> along;
+		for (int j = 0; j < n; j++) along.push_back(frame[size_t(j)]);
+		for (int j = 0; j <= m; j++) along.push_back(frame[size_t(2 * n + j)]);
+		for (int j = n - 1; j >= 0; j--) along.push_back(frame[size_t(n + j)]);
+		for (size_t i = 0; i < along.size(); i++)
+		{
+			const int k = int(i);
+			along[i].name = k == 0 ? "base-left" : k < n ? "column-left-" + std::to_string(k) : k == n ? "knee-left" : k < n + m ? "beam-" + std::to_string(k - n) : k == n + m ? "knee-right" : k < 2 * n + m ? "column-right-" + std::to_string(k - n - m) : "base-right";
+		}
+		frame = along;
+	}
+	else
+	{
+		for (FrameJoint& j : frame)
+			if (j.name.size() > 2 && j.name.compare(0, 7, "column-") == 0 && j.a == nullptr) j.name = "base-" + j.name.substr(7, j.name.find('-', 7) - 7);
+	}
+	std::vector<const btRigidBody*> bodies = {nullptr};
+	for (const FrameJoint& j : frame)
+	{
+		s.joints.push_back(j.joint);
+		s.names.push_back(j.name);
+		for (const btRigidBody* body : {j.a, j.b})
+			if (std::find(bodies.begin(), bodies.end(), body) == bodies.end()) bodies.push_back(body);
+	}
+	for (const btRigidBody* body : bodies) s.bodyAngles.push_back(std::make_unique<structures::PlanarAngle>(body));
+	auto angleOf = [&](const btRigidBody* body) { return s.bodyAngles[size_t(std::find(bodies.begin(), bodies.end(), body) - bodies.begin())].get(); };
+	for (const FrameJoint& j : frame)
+	{
+		s.angles.push_back({angleOf(j.a), angleOf(j.b)});
+		s.sites.push_back(structures::jointSite(*j.joint, j.a, *j.b, j.pivot));
 	}
 	for (const plastic::Joint* j : s.joints) s.ledger.addJoint(*j);
 	s.measuredAtBreak.assign(s.joints.size(), std::nan(""));
 	s.brokenAt_s.assign(s.joints.size(), -1);
-	for (size_t i = 1; i + 1 < path.size(); i++)
+	for (size_t i = 1; i < bodies.size(); i++)
 	{
-		s.frameBodies.push_back(path[i]);
-		s.ledger.addBody(*path[i]);
+		s.frameBodies.push_back(bodies[i]);
+		s.ledger.addBody(*bodies[i]);
 	}
 
 	// the ball at the release angle, away from the frame (towards -x); at the bottom of its swing 2 cm from the column
@@ -233,10 +294,12 @@ WreckingBallScene::~WreckingBallScene()
 	btDiscreteDynamicsWorld& world = s.structure.world();
 	world.setInternalTickCallback(nullptr);
 	s.pendulum.reset();
-	world.removeConstraint(s.base.constraint.get());
-	s.columnRight.reset();
-	s.beam.reset();
-	s.columnLeft.reset();
+	for (plastic::Joint& j : s.endJoints) world.removeConstraint(j.constraint.get());
+	s.endJoints.clear();
+	for (auto floor = s.beams.rbegin(); floor != s.beams.rend(); ++floor)
+		while (!floor->empty()) floor->pop_back();
+	for (auto& line : s.columns)
+		while (!line.empty()) line.pop_back();
 	world.removeRigidBody(s.ground.get());
 }
 

@@ -30,3 +30,25 @@ TEST(WreckingBallControls, EverySliderRangeBuilds)
 			EXPECT_NO_THROW(scene.build(values, plastic::JointMethod::PlasticHinge)) << scene.sliders[i].label << " = " << v;
 		}
 }
+
+// The building example: the wrecking ball's sliders and their defaults, then storeys and bays (5 and 4 at the start);
+// every slider's range builds.
+TEST(BuildingControls, StartAtFiveStoreysAndFourBaysAndEveryRangeBuilds)
+{
+	const structures::ControlledScene scene = buildingControls();
+	const std::vector<float> start = structures::initialValues(scene);
+	const WreckingBallParameters p = buildingFromSliders(start, plastic::JointMethod::PlasticHinge);
+	const WreckingBallParameters d;
+	EXPECT_EQ(p.storeys, 5);
+	EXPECT_EQ(p.bays, 4);
+	EXPECT_FLOAT_EQ(float(p.release_angle_rad), float(d.release_angle_rad));
+	EXPECT_EQ(p.solver.solver, d.solver.solver);
+	EXPECT_THROW(buildingFromSliders(std::vector<float>(start.begin(), start.begin() + 8), plastic::JointMethod::PlasticHinge), std::invalid_argument);
+	for (size_t i = 0; i < scene.sliders.size(); i++)
+		for (float v : {scene.sliders[i].min, scene.sliders[i].max})
+		{
+			std::vector<float> values = start;
+			values[i] = v;
+			EXPECT_NO_THROW(scene.build(values, plastic::JointMethod::PlasticHinge)) << scene.sliders[i].label << " = " << v;
+		}
+}

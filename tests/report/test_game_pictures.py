@@ -56,6 +56,22 @@ class GamePicturesTest(unittest.TestCase):
             self.assertIn("lacks the columns booked_work_J", r.stderr)
             self.assertFalse(os.path.exists(os.path.join(d, "out", "wrecking-ball.gif")))
 
+class ShownJointsTest(unittest.TestCase):
+    def test_a_building_shows_the_joints_that_yielded(self):
+        sys.path.insert(0, os.path.dirname(SCRIPT))
+        import game_pictures
+
+        few = [{"joint": "j%d" % i, "booked_work_J": str(i)} for i in range(10)]
+        self.assertEqual(game_pictures.shown_joints(few), few)
+        many = [{"joint": "j%d" % i, "booked_work_J": "0"} for i in range(200)]
+        many[3]["booked_work_J"] = "1000"
+        many[150]["booked_work_J"] = "10"
+        many[151]["booked_work_J"] = "9.99"
+        self.assertEqual([r["joint"] for r in game_pictures.shown_joints(many)], ["j3", "j150"])
+        idle = [{"joint": "j%d" % i, "booked_work_J": "0"} for i in range(200)]
+        self.assertEqual(len(game_pictures.shown_joints(idle)), game_pictures.MAX_JOINTS_SHOWN)
+
+
 
 if __name__ == "__main__":
     unittest.main()
