@@ -197,23 +197,20 @@ WreckingBallScene::WreckingBallScene(const WreckingBallParameters& p)
 			frame.push_back({&s.endJoints.back(), beam.segments().back(), right, end, prefix + "-end"});
 		}
 	}
-	for (const auto& line : s.columns)
-		for (const auto& member : line)
-			for (size_t j = 0; j < member->joints().size(); j++) plastic::updateJointForStep(*member->joints()[j].constraint, member->jointSpecs()[j], p.solver.internal_step_s);
-	for (const auto& floor : s.beams)
-		for (const auto& member : floor)
-			for (size_t j = 0; j < member->joints().size(); j++) plastic::updateJointForStep(*member->joints()[j].constraint, member->jointSpecs()[j], p.solver.internal_step_s);
-	for (size_t i = 0; i < s.endJoints.size(); i++) plastic::updateJointForStep(*s.endJoints[i].constraint, s.endSpecs[i], p.solver.internal_step_s);
-	// the members meet at the nodes, where segments of members that are not joined overlap: the frame does not collide
-	// with itself (the ball and the ground still collide with it)
+	// every member once: its joints follow the step, and the frame does not collide with itself (the members meet at
+	// the nodes, where segments of members that are not joined overlap; the ball and the ground still collide with it)
 	for (const auto& group : {&s.columns, &s.beams})
 		for (const auto& row : *group)
 			for (const auto& member : row)
+			{
+				for (size_t j = 0; j < member->joints().size(); j++) plastic::updateJointForStep(*member->joints()[j].constraint, member->jointSpecs()[j], p.solver.internal_step_s);
 				for (btRigidBody* body : member->segments())
 				{
 					world.removeRigidBody(body);
 					world.addRigidBody(body, kFrameGroup, btBroadphaseProxy::AllFilter & ~kFrameGroup);
 				}
+			}
+	for (size_t i = 0; i < s.endJoints.size(); i++) plastic::updateJointForStep(*s.endJoints[i].constraint, s.endSpecs[i], p.solver.internal_step_s);
 
 	if (portal)
 	{
@@ -224,11 +221,17 @@ WreckingBallScene::WreckingBallScene(const WreckingBallParameters& p)
 		for (int j = 0; j < n; j++) along.push_back(frame[size_t(j)]);
 		for (int j = 0; j <= m; j++) along.push_back(frame[size_t(2 * n + j)]);
 		for (int j = n - 1; j >= 0; j--) along.push_back(frame[size_t(n + j)]);
-		for (size_t i = 0; i < along.size(); i++)
+		auto portalName = [n, m](int k) -> std::string
 		{
-			const int k = int(i);
-			along[i].name = k == 0 ? "base-left" : k < n ? "column-left-" + std::to_string(k) : k == n ? "knee-left" : k < n + m ? "beam-" + std::to_string(k - n) : k == n + m ? "knee-right" : k < 2 * n + m ? "column-right-" + std::to_string(k - n - m) : "base-right";
-		}
+			if (k == 0) return "base-left";
+			if (k < n) return "column-left-" + std::to_string(k);
+			if (k == n) return "knee-left";
+			if (k < n + m) return "beam-" + std::to_string(k - n);
+			if (k == n + m) return "knee-right";
+			if (k < 2 * n + m) return "column-right-" + std::to_string(k - n - m);
+			return "base-right";
+		};
+		for (size_t i = 0; i < along.size(); i++) along[i].name = portalName(int(i));
 		frame = along;
 	}
 	else
@@ -245,7 +248,8 @@ WreckingBallScene::WreckingBallScene(const WreckingBallParameters& p)
 			if (std::find(bodies.begin(), bodies.end(), body) == bodies.end()) bodies.push_back(body);
 	}
 	for (const btRigidBody* body : bodies) s.bodyAngles.push_back(std::make_unique<structures::PlanarAngle>(body));
-	auto angleOf = [&](const btRigidBody* body) { return s.bodyAngles[size_t(std::find(bodies.begin(), bodies.end(), body) - bodies.begin())].get(); };
+	auto angleOf = [&](const btRigidBody* body)
+	{ return s.bodyAngles[size_t(std::find(bodies.begin(), bodies.end(), body) - bodies.begin())].get(); };
 	for (const FrameJoint& j : frame)
 	{
 		s.angles.push_back({angleOf(j.a), angleOf(j.b)});
