@@ -78,7 +78,7 @@ struct FrameJointResult
 	double booked_rotation_rad = 0;    // accumulated plastic rotation the joint booked (0: hinge-motor stand-in)
 	double measured_rotation_rad = 0;  // its rotation measured from the bodies (at the step it broke, if it broke)
 	double booked_work_j = 0;
-	double measured_work_j = 0;  // Mp x |measured rotation|
+	double measured_work_j = 0;  // Mp x |measured rotation|, up to max_plastic_rotation_rad for a broken joint
 	bool broken = false;
 	double broken_at_s = -1;  // -1: not broken
 };

@@ -350,7 +350,9 @@ WreckingBallResult WreckingBallScene::result() const
 		j.broken = !s.joints[i]->constraint->isEnabled();
 		j.measured_rotation_rad = std::isnan(s.measuredAtBreak[i]) ? s.relativeRotation(i) : s.measuredAtBreak[i];
 		j.booked_work_j = s.joints[i]->plasticWork_j();
-		j.measured_work_j = mp * std::fabs(j.measured_rotation_rad);
+		// a rigid-plastic joint absorbs Mp over its rotation up to its limit: the rest of the step that broke it is
+		// free motion
+		j.measured_work_j = mp * (j.broken ? std::min(std::fabs(j.measured_rotation_rad), s.p.max_plastic_rotation_rad) : std::fabs(j.measured_rotation_rad));
 		j.broken_at_s = j.broken ? s.brokenAt_s[i] : -1;
 		r.plastic_booked_j += j.booked_work_j;
 		r.plastic_measured_j += j.measured_work_j;
