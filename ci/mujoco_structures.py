@@ -789,6 +789,16 @@ def summary(by, num, gone):
                  "below Mp it turns at a rate that grows with the load, and none of the softnesses measured holds the cantilever, "
                  "up to impedance 0.9999 (MuJoCo's bound) at the 2-step time constant (the least MuJoCo's refsafe allows); the inner "
                  "joints turn more than the root.")
+    first = []
+    for soft in SOFTNESS:
+        for solver, it in SOLVERS:
+            gone_at = [n for n in SEGMENTS_TIMED if num(by.get(f"mujoco/{soft}/{solver}/{it}/hold/{n}"), "diverged_at_s") is not None]
+            ran = [n for n in SEGMENTS_TIMED if f"mujoco/{soft}/{solver}/{it}/hold/{n}" in by]
+            if ran:
+                first.append(f"{soft} {solver} {it}: " + (f"from {min(gone_at)} segments" if gone_at else "none"))
+    if first:
+        lines.append("- Holds in which MuJoCo found a blown-up acceleration and reset the state (the smallest of 4-128 segments that did): "
+                     + "; ".join(first) + ".")
     c4, c8 = by.get("mujoco/stiffest/Newton/100/collapse/4"), by.get("mujoco/stiffest/Newton/100/collapse/8")
     if c4 and c8:
         lines.append(f"- Collapse (root turns 0.05 rad in 1 s), stiffest rows, Newton: {c4['root_collapse_factor']} (4 segments), "
