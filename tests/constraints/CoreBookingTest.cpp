@@ -635,3 +635,33 @@ TEST(PlasticHingeCore, BooksTheRotationBulletAppliesWhenItClampsTheStep)
 		EXPECT_NEAR(double(lever.hinge->getAbsorbedEnergy()), lever.mp * measured, 1e-3 * lever.mp * measured) << speed << " rad/s";
 	}
 }
+
+// Issue 21 part 4: a million steps of flow sum to what the bodies did. A bar keeps yielding at 1 rad/s on a plastic
+// hinge (a moment of Mp holds its speed) for 1e6 steps of 0.1 ms: 100 rad. The booked rotation and energy against
+// the rotation measured from the orientation (summed in double in the test) and Mp times it. The control: the same
+// step rotations summed in a float, as the accumulators were, end 0.54 % short.
+TEST(PlasticHingeCore, AMillionStepsOfFlowSumToTheRotationTheBarMade)
+{
+	const double dt = 1e-4, mp = 2.0;
+	Lever lever(mp);
+	lever.bar->setAngularVelocity(btVector3(0, 0, 1));
+	double measured = 0, previous = angleZ(lever.bar);
+	float floatSum = 0;
+	for (int i = 0; i < 1000000; i++)
+	{
+		lever.bar->applyTorque(btVector3(0, 0, btScalar(mp)));
+		lever.w.world.stepSimulation(btScalar(dt), 0);
+		const double now = angleZ(lever.bar);
+		const double step = unwrap(now - previous);
+		measured += step;
+		floatSum += float(step);
+		previous = now;
+	}
+	std::printf("[ info     ] 1e6 steps: measured %.6f rad, booked %.6f rad, %.6f J (Mp x measured %.6f J); the float sum %.6f rad (%+.3f %%)\n", measured,
+				double(lever.hinge->getCurrentPlasticRotation()), double(lever.hinge->getAbsorbedEnergy()), mp * measured, double(floatSum),
+				100 * (double(floatSum) / measured - 1));
+	ASSERT_GT(measured, 90.0) << "the bar kept yielding";
+	EXPECT_NEAR(double(lever.hinge->getCurrentPlasticRotation()), measured, 1e-4 * measured);
+	EXPECT_NEAR(double(lever.hinge->getAbsorbedEnergy()), mp * measured, 1e-4 * mp * measured);
+	EXPECT_GT(std::fabs(double(floatSum) / measured - 1), 1e-3) << "control: a float sum of the steps drifts";
+}
