@@ -1,6 +1,11 @@
 #include "JointScene.h"
 
+#include <stdexcept>
+
 #include "BulletCollision/CollisionDispatch/btSimulationIslandManager.h"
+#if !defined(BP_UPSTREAM_ONLY) && !defined(BP_THREADS)
+#include "BulletDynamics/ConstraintSolver/btDirectJointSolver.h"
+#endif
 
 namespace
 {
@@ -99,14 +104,20 @@ btTypedConstraint* makeJoint(JointKind kind, btRigidBody& anchor, btRigidBody& b
 }
 }  // namespace
 
-JointScene::JointScene(JointKind kind, int joints, bool splitIslands)
+JointScene::JointScene(JointKind kind, int joints, bool splitIslands, bool directSolver)
 {
+#if !defined(BP_UPSTREAM_ONLY) && !defined(BP_THREADS)
+	if (directSolver) m_directSolver = std::make_unique<btDirectJointSolver>();
+#else
+	if (directSolver) throw std::invalid_argument("JointScene: btDirectJointSolver is not in this build");
+#endif
 #ifdef BP_THREADS
 	// islands in parallel on a pool of solvers; one large island (no splitting) on the multithreaded solver
 	m_solverPool = std::make_unique<btConstraintSolverPoolMt>(BT_MAX_THREAD_COUNT);
 	m_world = std::make_unique<btDiscreteDynamicsWorldMt>(&m_dispatcher, &m_broadphase, m_solverPool.get(), &m_solverMt, &m_configuration);
 #else
-	m_world = std::make_unique<btDiscreteDynamicsWorld>(&m_dispatcher, &m_broadphase, &m_solver, &m_configuration);
+	btConstraintSolver* solver = m_directSolver ? m_directSolver.get() : static_cast<btConstraintSolver*>(&m_solver);
+	m_world = std::make_unique<btDiscreteDynamicsWorld>(&m_dispatcher, &m_broadphase, solver, &m_configuration);
 #endif
 	m_world->setGravity(btVector3(0, btScalar(-9.81), 0));
 	m_world->getSimulationIslandManager()->setSplitIslands(splitIslands);

@@ -28,8 +28,9 @@ enum class JointKind
 class JointScene
 {
 public:
-	// splitIslands: Bullet's default (each one-joint island solved on its own) or one solver call for all
-	JointScene(JointKind kind, int joints, bool splitIslands = false);
+	// splitIslands: Bullet's default (each one-joint island solved on its own) or one solver call for all;
+	// directSolver: btDirectJointSolver instead of sequential impulse (not in the upstream-only and threads builds)
+	JointScene(JointKind kind, int joints, bool splitIslands = false, bool directSolver = false);
 	~JointScene();
 	void step() { m_world->stepSimulation(kStep_s, 0, kStep_s); }
 	static constexpr btScalar kStep_s = btScalar(1.0 / 60);
@@ -41,6 +42,7 @@ private:
 	btCollisionDispatcher m_dispatcher{&m_configuration};
 	btDbvtBroadphase m_broadphase;
 	btSequentialImpulseConstraintSolver m_solver;
+	std::unique_ptr<btConstraintSolver> m_directSolver;
 #ifdef BP_THREADS
 	btSequentialImpulseConstraintSolverMt m_solverMt;
 	std::unique_ptr<btConstraintSolverPoolMt> m_solverPool;

@@ -20,12 +20,12 @@ void* countingAlloc(size_t size)
 }
 void countingFree(void* p) { std::free(p); }
 
-void stepScene(benchmark::State& state, JointKind kind, bool splitIslands)
+void stepScene(benchmark::State& state, JointKind kind, bool splitIslands, bool directSolver = false)
 {
 	const int joints = int(state.range(0));
 	btAlignedAllocSetCustom(countingAlloc, countingFree);
 	const long long before = gAllocatedBytes;
-	JointScene scene(kind, joints, splitIslands);
+	JointScene scene(kind, joints, splitIslands, directSolver);
 	scene.step();  // the solver's pools grow on the first step
 	const long long allocated = gAllocatedBytes - before;
 	for (auto _ : state) scene.step();
@@ -69,6 +69,11 @@ BENCHMARK_CAPTURE(stepScene, plastic_hinge_idle_split, JointKind::PlasticHingeId
 BENCHMARK_CAPTURE(stepScene, plastic_hinge_yielding_split, JointKind::PlasticHingeYielding, true)->Arg(1000)->Arg(10000);
 BENCHMARK_CAPTURE(stepScene, elastic_plastic2_split, JointKind::ElasticPlastic2, true)->Arg(1000)->Arg(10000);
 BENCHMARK_CAPTURE(breakingScene, plastic_members, true)->Arg(1000)->Unit(benchmark::kMillisecond);
+// the same scenes under btDirectJointSolver (one solver call: no island splitting)
+BENCHMARK_CAPTURE(stepScene, plastic_hinge_idle_direct, JointKind::PlasticHingeIdle, false, true)->Arg(1)->Arg(100)->Arg(1000);
+BENCHMARK_CAPTURE(stepScene, plastic_hinge_yielding_direct, JointKind::PlasticHingeYielding, false, true)->Arg(1)->Arg(100)->Arg(1000);
+BENCHMARK_CAPTURE(stepScene, elastic_plastic2_direct, JointKind::ElasticPlastic2, false, true)->Arg(1)->Arg(100)->Arg(1000);
+BENCHMARK_CAPTURE(stepScene, hinge_locked_direct, JointKind::HingeLocked, false, true)->Arg(1)->Arg(100)->Arg(1000);
 #endif
 BENCHMARK_CAPTURE(stepScene, hinge_locked, JointKind::HingeLocked, false)->Arg(1)->Arg(100)->Arg(1000)->Arg(10000);
 BENCHMARK_CAPTURE(stepScene, hinge_motor, JointKind::HingeMotor, false)->Arg(1)->Arg(100)->Arg(1000)->Arg(10000);
