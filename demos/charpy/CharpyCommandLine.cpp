@@ -58,7 +58,7 @@ const std::map<std::string, std::pair<Setter, const char*>>& valueFlags()
 						   "RAD  release from this angle (instead of --impact-speed), default 2.8"}},
 		{"initial-energy", {number(&CharpyParameters::initial_energy_j), "J  hammer energy, overrides --impact-speed and --release-angle"}},
 		{"brittle-force", {number(&CharpyParameters::brittle_breaking_force_n), "N  breaking force of method brittle, default 2e4"}},
-		{"frequency-ratio", {number(&CharpyParameters::frequency_ratio), "STEPS  per period for elastic DOFs, default 25"}},
+		{"min-steps-per-period", {number(&CharpyParameters::min_steps_per_period), "STEPS  per period for elastic DOFs, default 25"}},
 	};
 	return flags;
 }

@@ -94,6 +94,6 @@ std::vector<std::string> validateCharpyParameters(const CharpyParameters& p)
 		errors.push_back(out.str());
 	}
 	requireRange(errors, "brittle-force", p.brittle_breaking_force_n, 0, 1e12, false, "N");
-	requireRange(errors, "frequency-ratio", p.frequency_ratio, 1, 1e6, true, "steps per period");
+	requireRange(errors, "min-steps-per-period", p.min_steps_per_period, 1, 1e6, true, "steps per period");
 	return errors;
 }

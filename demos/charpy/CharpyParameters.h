@@ -58,7 +58,7 @@ struct CharpyParameters
 	// brittle method: breaking force of the zero-limit joint, N (impulse threshold = force * internal dt)
 	double brittle_breaking_force_n = 20e3;
 	// elastic-plastic methods: spring steps per natural period below which a DOF is rigid-plastic
-	double frequency_ratio = 25.0;
+	double min_steps_per_period = 25.0;
 };
 
 // The defaults are the thesis' scene (section 2.2): a flat striker nose as thick as the hammer, the hammer

@@ -284,7 +284,7 @@ void CharpyScene::createJoints()
 		spec.material = material;
 		spec.segment_length_m = p.specimen_length_m / p.parts;
 		spec.max_plastic_rotation_rad = p.max_plastic_rotation_rad;
-		spec.frequency_ratio = p.frequency_ratio;
+		spec.min_steps_per_period = p.min_steps_per_period;
 		spec.breaking_force_n = p.brittle_breaking_force_n;
 		m_impl->joints.push_back(plastic::makeJoint(spec, *m_parts[i], *m_parts[i + 1]));
 		m_impl->specs.push_back(spec);

@@ -27,7 +27,7 @@ void configureElasticPlastic(Constraint& c, const JointSpec& spec, Stiffness set
 		c.setMaxForce(i, btScalar(maxForce[i]));
 	}
 	c.setMaxPlasticRotation(btScalar(spec.max_plastic_rotation_rad));
-	c.setFrequencyRatio(btScalar(spec.frequency_ratio));
+	c.setMinStepsPerPeriod(btScalar(spec.min_steps_per_period));
 	c.resetPlasticState();
 }
 
@@ -76,9 +76,9 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 	{
 		throw std::invalid_argument("max plastic rotation: " + std::to_string(spec.max_plastic_rotation_rad) + " is not in (0, inf) rad");
 	}
-	if (!(spec.frequency_ratio >= 1))
+	if (!(spec.min_steps_per_period >= 1))
 	{
-		throw std::invalid_argument("frequency ratio: " + std::to_string(spec.frequency_ratio) + " is not in [1, inf) steps per period");
+		throw std::invalid_argument("min_steps_per_period: " + std::to_string(spec.min_steps_per_period) + " is not in [1, inf) steps per period");
 	}
 	if (spec.method == JointMethod::Brittle && !(spec.breaking_force_n > 0))
 	{

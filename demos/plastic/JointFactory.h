@@ -36,7 +36,7 @@ struct JointSpec
 	Material material;
 	double segment_length_m = 1.0;         // centre-to-centre of the bodies it joins: the elastic stiffness' length
 	double max_plastic_rotation_rad = 1e9; // accumulated plastic rotation that breaks it
-	double frequency_ratio = 25.0;         // elastic-plastic: spring steps per natural period below which a DOF is rigid-plastic
+	double min_steps_per_period = 25.0;    // elastic-plastic: steps per natural period below which a DOF is rigid-plastic
 	double breaking_force_n = 0;           // brittle: the force (N) at which it breaks (impulse threshold = force x step)
 	JointSolverSettings solver;            // what the joint asks of the solver (default: warm started rows)
 };

@@ -39,7 +39,7 @@ Constraint* elasticPlastic(Constraint* g)
 		g->setStiffness(i, 1e4);
 		g->setMaxForce(i, i < 3 ? 1e3 : kYieldCap_nm);
 	}
-	g->setMaxPlasticStrain(1e6);
+	g->setMaxPlasticDisplacement(1e6);
 	g->setMaxPlasticRotation(1e6);
 	return g;
 }

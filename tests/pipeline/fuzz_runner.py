@@ -11,7 +11,7 @@ import sys
 
 FLAGS = ["method", "dt", "auto-dt", "fy", "parts", "anvil-gap", "hammer-thickness", "max-plastic-rotation",
          "iterations", "release-angle", "initial-energy", "friction", "contact-substep", "auto-dt-coarse",
-         "youngs-modulus", "density", "specimen-width", "specimen-length", "notch-depth", "frequency-ratio",
+         "youngs-modulus", "density", "specimen-width", "specimen-length", "notch-depth", "min-steps-per-period",
          "brittle-force", "hammer-mass", "draft", "duration", "json", "list-methods", "help"]
 VALUES = ["-1", "0", "nan", "NaN", "inf", "-inf", "1e308", "-1e308", "1e-300", "abc", "", "1e", "0x10", " 3",
           "2", "3", "7", "0.5", "1e-4", "1e-3", "0.02", "400e6", "plastic-hinge", "rigid", "spring2", "64", "65",

@@ -103,7 +103,7 @@ void buildScene(World& w)
 	hc->setLockParameters(btScalar(0.8), btScalar(0.4));
 	hc->setSplitPositionCorrection(true);
 	hc->setPlasticMoment(btScalar(0.25));
-	hc->getPlasticState().setYieldTolerance(btScalar(0.002));
+	hc->setYieldTolerance(btScalar(0.002));
 
 	btPlasticHingeConstraint* hd = w.add(new btPlasticHingeConstraint(*d, btVector3(btScalar(-0.5), 0, 0), z));
 	hd->setPlasticMoment(7);
@@ -210,8 +210,8 @@ std::vector<btScalar> snapshot(btDiscreteDynamicsWorld& world)
 		{
 			const btPlasticConstraintState& p = ep->getPlasticState();
 			for (int k = 0; k < 6; k++) s.insert(s.end(), {ep->getMaxForce(k), ep->getEquilibriumPoint(k)});
-			s.insert(s.end(), {p.getCurrentPlasticRotation(), p.getCurrentPlasticStrain(), p.getAbsorbedEnergy(), p.getElasticEnergy(),
-							   p.getMaxPlasticRotation(), p.getMaxPlasticStrain(), p.getYieldTolerance(), p.getFrequencyRatio(),
+			s.insert(s.end(), {p.getCurrentPlasticRotation(), p.getCurrentPlasticDisplacement(), p.getAbsorbedEnergy(), p.getElasticEnergy(),
+							   p.getMaxPlasticRotation(), p.getMaxPlasticDisplacement(), p.getYieldTolerance(), p.getMinStepsPerPeriod(),
 							   btScalar(ep->getUseFrameOffset() ? 1 : 0)});
 			put(ep->getFrameOffsetA().getOrigin());
 			for (int r = 0; r < 3; r++) put(ep->getFrameOffsetA().getBasis()[r]);
@@ -219,15 +219,15 @@ std::vector<btScalar> snapshot(btDiscreteDynamicsWorld& world)
 		if (bt6DofElasticPlastic2Constraint* ep2 = dynamic_cast<bt6DofElasticPlastic2Constraint*>(c))
 		{
 			const btPlasticConstraintState& p = ep2->getPlasticState();
-			s.insert(s.end(), {p.getCurrentPlasticRotation(), p.getCurrentPlasticStrain(), p.getAbsorbedEnergy(), p.getElasticEnergy(),
-							   p.getMaxPlasticRotation(), p.getMaxPlasticStrain(), p.getYieldTolerance(), p.getFrequencyRatio()});
+			s.insert(s.end(), {p.getCurrentPlasticRotation(), p.getCurrentPlasticDisplacement(), p.getAbsorbedEnergy(), p.getElasticEnergy(),
+							   p.getMaxPlasticRotation(), p.getMaxPlasticDisplacement(), p.getYieldTolerance(), p.getMinStepsPerPeriod()});
 		}
 		if (btPlasticHingeConstraint* plastic = dynamic_cast<btPlasticHingeConstraint*>(c))
 		{
 			const btPlasticConstraintState& p = plastic->getPlasticState();
 			s.insert(s.end(), {plastic->getLockAngle(), plastic->getCurrentPlasticRotation(), plastic->getAbsorbedEnergy(),
-							   p.getMaxPlasticRotation(), p.getMaxPlasticStrain(), p.getYieldTolerance(), p.getFrequencyRatio(),
-							   p.getCurrentPlasticStrain(), p.getElasticEnergy()});
+							   p.getMaxPlasticRotation(), p.getMaxPlasticDisplacement(), p.getYieldTolerance(), p.getMinStepsPerPeriod(),
+							   p.getCurrentPlasticDisplacement(), p.getElasticEnergy()});
 		}
 	}
 	return s;
