@@ -55,6 +55,7 @@ Beam::Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* su
 			joint.segment_length_m = m_segmentLength_m;
 			joint.max_plastic_rotation_rad = spec.max_plastic_rotation_rad;
 			joint.solver = spec.solver;
+			joint.yield_surface = spec.yield_surface;
 			m_joints.push_back(makeJoint(joint, *previous, *body));
 			m_specs.push_back(joint);
 			m_world.addConstraint(m_joints.back().constraint.get(), true);

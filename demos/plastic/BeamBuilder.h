@@ -21,6 +21,7 @@ struct BeamSpec
 	JointMethod method = JointMethod::PlasticHinge;
 	double max_plastic_rotation_rad = 1e9;
 	JointSolverSettings solver;  // every joint's solver settings (SolverSettings.h)
+	YieldSurface yield_surface = YieldSurface::PerDof;  // elastic-plastic2: which DOFs yield together
 };
 
 class Beam

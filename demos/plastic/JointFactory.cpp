@@ -66,6 +66,22 @@ const char* jointMethodName(JointMethod method)
 	return "?";
 }
 
+// DOFs 3 (moment about y, the main bending) and 4 (about z) as configureElasticPlastic caps them
+static void setYieldSurface(bt6DofElasticPlastic2Constraint& c, const JointSpec& spec)
+{
+	using C = bt6DofElasticPlastic2Constraint;
+	if (spec.yield_surface == YieldSurface::Biaxial)
+	{
+		switch (spec.section.biaxial_interaction)
+		{
+			case BiaxialInteraction::Circle: c.setYieldSurface(C::YIELD_CIRCLE, 3, 4); break;
+			case BiaxialInteraction::Rectangle: c.setYieldSurface(C::YIELD_RECTANGLE_BIAXIAL, 3, 4); break;
+			case BiaxialInteraction::ISection: c.setYieldSurface(C::YIELD_LINEAR_QUADRATIC, 4, 3); break;  // weak z, strong y
+			case BiaxialInteraction::None: break;
+		}
+	}
+}
+
 Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 {
 	if (!(spec.segment_length_m > 0))
@@ -83,6 +99,15 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 	if (spec.method == JointMethod::Brittle && !(spec.breaking_force_n > 0))
 	{
 		throw std::invalid_argument("breaking force: " + std::to_string(spec.breaking_force_n) + " is not in (0, inf) N");
+	}
+	if (spec.yield_surface != YieldSurface::PerDof && spec.method != JointMethod::ElasticPlastic2)
+	{
+		throw std::invalid_argument("yield_surface: only an elastic-plastic2 joint has one (per-dof for " + std::string(jointMethodName(spec.method)) + ")");
+	}
+	if (spec.yield_surface == YieldSurface::Biaxial && spec.section.biaxial_interaction == BiaxialInteraction::None)
+	{
+		throw std::invalid_argument("yield_surface: biaxial needs a section whose interaction is known (rectangle, round bar, tube, I section), not a " +
+									spec.section.shape);
 	}
 	// a hinge's axis is the frame's Z: turn the basis so that bending axis 1 becomes Z
 	btMatrix3x3 hingeBasis;
@@ -147,6 +172,7 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 		{
 			auto c = std::make_unique<bt6DofElasticPlastic2Constraint>(a, b, frameIn(a, spec), frameIn(b, spec));
 			configureElasticPlastic(*c, spec, [](bt6DofElasticPlastic2Constraint& j, int i, double k) { j.setStiffness(i, btScalar(k), false); });
+			setYieldSurface(*c, spec);
 			configureJoint(*c, spec.solver, false);  // springs
 			const btPlasticConstraintState* state = &c->getPlasticState();
 			return Joint{std::move(c), state, spec.method};

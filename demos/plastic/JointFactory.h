@@ -27,6 +27,13 @@ enum class JointMethod
 // "brittle", "spring", "spring2", "hinge-motor", "plastic-hinge", "elastic-plastic", "elastic-plastic2"
 const char* jointMethodName(JointMethod method);
 
+// Which of an elastic-plastic2 joint's DOFs yield together (bt6DofElasticPlastic2Constraint::setYieldSurface)
+enum class YieldSurface
+{
+	PerDof,        // each DOF at its own capacity (the default)
+	Biaxial,  // the two bending moments on the section's BiaxialInteraction curve
+};
+
 struct JointSpec
 {
 	JointMethod method = JointMethod::PlasticHinge;
@@ -39,6 +46,7 @@ struct JointSpec
 	double min_steps_per_period = 25.0;    // elastic-plastic: steps per natural period below which a DOF is rigid-plastic
 	double breaking_force_n = 0;           // brittle: the force (N) at which it breaks (impulse threshold = force x step)
 	JointSolverSettings solver;            // what the joint asks of the solver (default: warm started rows)
+	YieldSurface yield_surface = YieldSurface::PerDof;  // elastic-plastic2 only
 };
 
 // A joint and, for the plastic methods, its plastic bookkeeping (the same interface for all three classes, kept

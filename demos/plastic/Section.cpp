@@ -33,6 +33,7 @@ SectionProperties rectangle(double width_m, double depth_m)
 	const double a = std::max(b, h), t = std::min(b, h);
 	SectionProperties s;
 	s.shape = "rectangle";
+	s.biaxial_interaction = BiaxialInteraction::Rectangle;
 	s.width_m = b;
 	s.depth_m = h;
 	s.area_m2 = b * h;
@@ -65,6 +66,7 @@ SectionProperties roundBar(double diameter_m)
 	const double d = diameter_m;
 	SectionProperties s;
 	s.shape = "round bar";
+	s.biaxial_interaction = BiaxialInteraction::Circle;
 	s.width_m = s.depth_m = d;
 	s.area_m2 = M_PI * d * d / 4.0;
 	s.shear_area_m2 = s.area_m2;
@@ -86,6 +88,7 @@ SectionProperties tube(double outer_diameter_m, double wall_m)
 	const double D = outer_diameter_m, d = outer_diameter_m - 2.0 * wall_m;
 	SectionProperties s;
 	s.shape = "tube";
+	s.biaxial_interaction = BiaxialInteraction::Circle;
 	s.width_m = s.depth_m = D;
 	s.area_m2 = M_PI * (D * D - d * d) / 4.0;
 	s.shear_area_m2 = 2.0 * s.area_m2 / M_PI;
@@ -114,6 +117,7 @@ SectionProperties iSection(double depth_m, double flange_width_m, double web_thi
 	const double hw = h - 2.0 * tf;  // clear web depth
 	SectionProperties s;
 	s.shape = "I section";
+	s.biaxial_interaction = BiaxialInteraction::ISection;
 	s.width_m = b;
 	s.depth_m = h;
 	s.area_m2 = 2.0 * b * tf + hw * tw;

@@ -11,6 +11,16 @@
 
 namespace plastic
 {
+// The fully plastic interaction of a section's two bending moments (u = M / Mp about each axis): the curve on which
+// a bt6DofElasticPlastic2Constraint yields when a joint asks for it (JointSpec::yield_surface).
+enum class BiaxialInteraction
+{
+	None,       // not known: each axis yields alone
+	Circle,     // round bar, tube: uy^2 + uz^2 = 1
+	Rectangle,  // uy + 3/4 uz^2 = 1 for uz <= uy (and the other way round)
+	ISection,   // uz + uy^2 = 1 (weak axis z, strong axis y; EN 1993-1-1 6.2.9.1 (6) without axial force)
+};
+
 struct SectionProperties
 {
 	std::string shape;
@@ -24,6 +34,7 @@ struct SectionProperties
 	double plastic_modulus_z_m3 = 0;
 	double torsion_constant_m4 = 0;      // St Venant J: torsional stiffness G J / L
 	double plastic_torsion_modulus_m3 = 0;  // fully plastic torque = tau_y * this
+	BiaxialInteraction biaxial_interaction = BiaxialInteraction::None;
 };
 
 // Capacities (N, N m) of a section of a material: the forces and moments at which it is fully plastic.
