@@ -16,9 +16,7 @@ plastic::WorldSolverSettings wreckingBallSolverSettings()
 
 std::vector<std::string> validateWreckingBallParameters(const WreckingBallParameters& p)
 {
-	std::vector<std::string> e;
-	requireRange(e, "internal-step", p.solver.internal_step_s, 1e-5, 0.05, "s");
-	requireWhole(e, "iterations", p.solver.iterations, 1, 100000);
+	std::vector<std::string> e = plastic::validate(p.solver, "internal-step");
 	requireRange(e, "frame-rate", p.frame_rate_hz, 1, 1000, "Hz");
 	requireRange(e, "duration", p.duration_s, 0.01, 600, "s");
 	requireRange(e, "gravity", p.gravity_m_s2, 0.1, 100, "m/s2");

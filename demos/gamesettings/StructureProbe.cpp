@@ -279,8 +279,9 @@ double collapseLoad_n(const ProbeCase& /*c*/)
 
 ProbeRun runProbe(const ProbeCase& c, JointMethod method, const ProbeSetting& setting, double loadFactor, double seconds)
 {
-	if (!(setting.world.internal_step_s > 0 && setting.world.internal_step_s <= 0.1))
-		throw std::invalid_argument("internal step: " + std::to_string(setting.world.internal_step_s) + " is not in (0, 0.1] s");
+	const std::vector<std::string> errors = validate(setting.world);
+	if (!errors.empty())
+		throw std::invalid_argument(errors.front());
 	return setting.multibody ? runMultiBody(c, setting, loadFactor, seconds) : runRigid(c, method, setting, loadFactor, seconds);
 }
 

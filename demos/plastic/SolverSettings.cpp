@@ -1,6 +1,7 @@
 #include "SolverSettings.h"
 
 #include <cstdlib>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -64,13 +65,9 @@ StructureWorld::StructureWorld(const WorldSolverSettings& settings)
 	  m_broadphase(std::make_unique<btDbvtBroadphase>()),
 	  m_solver(settings.solver)
 {
-	if (!(settings.internal_step_s > 0 && settings.internal_step_s <= 0.1))
-	{
-		throw std::invalid_argument("internal step: " + std::to_string(settings.internal_step_s) + " is not in (0, 0.1] s");
-	}
 	m_world = std::make_unique<btDiscreteDynamicsWorld>(m_dispatcher.get(), m_broadphase.get(), m_solver.get(), m_configuration.get());
 	m_world->setGravity(btVector3(0, 0, 0));
-	configureWorld(*m_world, settings);
+	configureWorld(*m_world, settings);  // validates the settings
 }
 
 StructureWorld::~StructureWorld() = default;
@@ -112,15 +109,36 @@ int OwnedSolver::fallbacks() const
 	return m_mlcp ? static_cast<const btMLCPSolver*>(m_solver.get())->getNumFallbacks() : 0;
 }
 
-void configureWorld(btDynamicsWorld& world, const WorldSolverSettings& settings)
+std::vector<std::string> validate(const WorldSolverSettings& settings, const char* internalStepName)
 {
+	std::vector<std::string> errors;
+	if (!(settings.internal_step_s >= 1e-6 && settings.internal_step_s <= 0.05))
+	{
+		std::ostringstream out;
+		out << internalStepName << ": " << settings.internal_step_s << " is not in [1e-06, 0.05] s";
+		errors.push_back(out.str());
+	}
 	if (settings.iterations < 1 || settings.iterations > 100000)
 	{
-		throw std::invalid_argument("iterations: " + std::to_string(settings.iterations) + " is not in [1, 100000]");
+		errors.push_back("iterations: " + std::to_string(settings.iterations) + " is not in [1, 100000]");
 	}
 	if (!(settings.erp > 0 && settings.erp <= 1))
 	{
-		throw std::invalid_argument("erp: " + std::to_string(settings.erp) + " is not in (0, 1]");
+		std::ostringstream out;
+		out << "erp: " << settings.erp << " is not in (0, 1]";
+		errors.push_back(out.str());
+	}
+	return errors;
+}
+
+void configureWorld(btDynamicsWorld& world, const WorldSolverSettings& settings)
+{
+	const std::vector<std::string> errors = validate(settings);
+	if (!errors.empty())
+	{
+		std::string all = errors.front();
+		for (size_t i = 1; i < errors.size(); i++) all += "; " + errors[i];
+		throw std::invalid_argument(all);
 	}
 	btContactSolverInfo& info = world.getSolverInfo();
 	info.m_numIterations = settings.iterations;

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "btBulletDynamicsCommon.h"
 
@@ -102,6 +103,11 @@ private:
 
 // The world's solver info from the settings (iterations, ERP, solver mode).
 void configureWorld(btDynamicsWorld& world, const WorldSolverSettings& settings);
+
+// The one check of a WorldSolverSettings (every scene and runner uses it): internal step in [1e-6, 0.05] s,
+// iterations in [1, 100000], erp in (0, 1]. One message per bad field, naming it (the internal step as
+// internalStepName, the runners' flag: "dt", "internal-step"); empty when every field is valid.
+std::vector<std::string> validate(const WorldSolverSettings& settings, const char* internalStepName = "internal step");
 // A joint's solver settings; split_position_correction only where allowMomentumFreeCorrection.
 void configureJoint(btTypedConstraint& joint, const JointSolverSettings& settings, bool allowSplitPositionCorrection);
 }  // namespace plastic

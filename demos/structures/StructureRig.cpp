@@ -25,11 +25,7 @@ void requireWhole(std::vector<std::string>& errors, const char* name, int value,
 
 std::vector<std::string> validateSolverSettings(const SolverSettings& s)
 {
-	std::vector<std::string> errors;
-	requireRange(errors, "dt", s.world.internal_step_s, 1e-6, 0.05, "s");
-	requireWhole(errors, "iterations", s.world.iterations, 1, 100000);
-	requireRange(errors, "erp", s.world.erp, 1e-6, 1, "");
-	return errors;
+	return plastic::validate(s.world, "dt");
 }
 
 StructureRig::StructureRig(const SolverSettings& settings) : m_settings(settings), m_world(settings.world)

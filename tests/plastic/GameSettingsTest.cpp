@@ -246,3 +246,26 @@ TEST(GameSettingsImpact, DropWeightOnACantileverGainsNoEnergy)
 	EXPECT_GT(d.rootRotation_rad, 0.05);
 	EXPECT_EQ(d.fallbacks, 0) << "of 240 steps";
 }
+
+// One check of a WorldSolverSettings (issue 22): a message per bad field, naming it, and the runners' flag name
+// for the internal step; the bounds are accepted and just past them refused.
+TEST(ToolkitSolverSettings, OneValidationNamesEveryBadField)
+{
+	EXPECT_TRUE(validate(WorldSolverSettings()).empty());
+	WorldSolverSettings w;
+	w.internal_step_s = 1e-6;
+	w.iterations = 100000;
+	w.erp = 1;
+	EXPECT_TRUE(validate(w).empty());
+	w.internal_step_s = 0.0501;
+	w.iterations = 0;
+	w.erp = 0;
+	const std::vector<std::string> errors = validate(w, "dt");
+	ASSERT_EQ(errors.size(), 3u);
+	EXPECT_EQ(errors[0].rfind("dt: ", 0), 0u) << errors[0];
+	EXPECT_EQ(errors[1].rfind("iterations: ", 0), 0u) << errors[1];
+	EXPECT_EQ(errors[2].rfind("erp: ", 0), 0u) << errors[2];
+	w = WorldSolverSettings();
+	w.internal_step_s = std::nan("");
+	EXPECT_EQ(validate(w).size(), 1u);
+}
