@@ -97,3 +97,18 @@ std::vector<std::string> validateCharpyParameters(const CharpyParameters& p)
 	requireRange(errors, "min-steps-per-period", p.min_steps_per_period, 1, 1e6, true, "steps per period");
 	return errors;
 }
+
+std::string charpySelfLockWarning(const CharpyParameters& p)
+{
+	const bool flatNose = p.striker_radius_m == 0 && p.hammer_thickness_m >= kFlatNoseSelfLockThickness_m;
+	if (!flatNose || !(p.friction > kFlatNoseSelfLockFriction))
+	{
+		return "";
+	}
+	std::ostringstream out;
+	out << "friction " << p.friction << " > " << kFlatNoseSelfLockFriction << " with the thesis' flat striker nose (" << p.hammer_thickness_m * 1000
+		<< " mm): its corners self-lock on the bent specimen, which stops in front of the anvils with nearly all the hammer's energy; "
+		   "use --geometry=standard (a 2 mm striker edge) for runs with friction";
+	return out.str();
+}
+

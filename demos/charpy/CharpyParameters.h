@@ -69,3 +69,15 @@ void applyThesisGeometry(CharpyParameters& parameters);
 
 // Every violated constraint as "parameter: value is not in range" text; empty when valid.
 std::vector<std::string> validateCharpyParameters(const CharpyParameters& parameters);
+
+// The friction above which the thesis' flat nose (a box as thick as the hammer, 20 mm or more) self-locks: its
+// corners bear on the bent halves 10 mm off mid-span and the contacts stick, so the hammer gives up nearly all it
+// has and the specimen stops in front of the anvils. Measured with build/bin/charpy --friction=MU (plastic hinge,
+// default steps, E0 = 283 J): loss 132.7 J at 0, 172.4 J at 0.03, 198.2 J at 0.04, 233.7 J at 0.05, not through
+// at 0.06 (235.6 J) and 0.08 (241.8 J); with --hammer-thickness=0.01 it passes at 0.07 (148.5 J).
+constexpr double kFlatNoseSelfLockFriction = 0.04;
+constexpr double kFlatNoseSelfLockThickness_m = 0.02;
+
+// A warning for a run that will self-lock (the flat nose, at least 20 mm thick, above that friction), naming
+// --geometry=standard; empty otherwise. The runner prints it before the run and reports it in its verdict.
+std::string charpySelfLockWarning(const CharpyParameters& parameters);

@@ -25,6 +25,7 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	r.plastic_moment_Nm = scene.section().plastic_moment_nm;
 	r.impact_speed_m_s = scene.impactSpeed_m_s();
 	r.friction = parameters.friction;
+	r.warning = charpySelfLockWarning(parameters);
 	r.striker_radius_m = parameters.striker_radius_m;
 	r.anvil_radius_m = parameters.anvil_radius_m;
 	r.anvil_taper_rad = parameters.anvil_taper_rad;
@@ -113,8 +114,13 @@ std::string toJson(const CharpyResult& r)
 	const CharpyVerdict verdict = classifyCharpyRun(r, &why);
 	std::string accuracyWhy;
 	const CharpyAccuracy accuracy = classifyCharpyAccuracy(r, &accuracyWhy);
+	if (!r.warning.empty())
+	{
+		accuracyWhy += (accuracyWhy.empty() ? "" : "; ") + std::string("predicted before the run: ") + r.warning;
+	}
 	out << ",\"verdict\":\"" << charpyVerdictName(verdict) << "\",\"verdict_reason\":\"" << why << "\""
-		<< ",\"accuracy\":\"" << charpyAccuracyName(accuracy) << "\",\"accuracy_reason\":\"" << accuracyWhy << "\"}";
+		<< ",\"accuracy\":\"" << charpyAccuracyName(accuracy) << "\",\"accuracy_reason\":\"" << accuracyWhy << "\""
+		<< ",\"self_locking\":" << flag(!r.warning.empty()) << ",\"warning\":\"" << r.warning << "\"}";
 	return out.str();
 }
 
@@ -131,5 +137,10 @@ std::string toSummary(const CharpyResult& r)
 				  r.analytic_J, r.error_pct, r.plastic_rotation_rad, r.broken ? "yes" : "no", r.passed_anvils ? "yes" : "no",
 				  r.tunnelled ? " (TUNNELLED: past the anvils with too little bend to fit the gap)" : "", r.max_energy_gain_J, r.max_penetration_m,
 				  r.finite ? "" : "\n  NOT FINITE: the simulation produced NaN or infinity");
-	return text;
+	std::string summary = text;
+	if (!r.warning.empty())
+	{
+		summary += "  SELF-LOCKING (predicted before the run): " + r.warning + "\n";
+	}
+	return summary;
 }

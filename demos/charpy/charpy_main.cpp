@@ -34,6 +34,11 @@ int main(int argc, char** argv)
 		}
 		return 0;
 	}
+	const std::string warning = charpySelfLockWarning(cl.parameters);
+	if (!warning.empty())
+	{
+		std::cerr << "charpy: warning: " << warning << "\n";
+	}
 	try
 	{
 		std::ostringstream history;

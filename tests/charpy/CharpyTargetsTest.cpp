@@ -187,3 +187,25 @@ TEST(CharpyAccuracy, StableRunsThatAreNotAccurateAreToldApart)
 		EXPECT_EQ(charpyAccuracyName(classifyCharpyAccuracy(r, &why)), "did-not-pass") << why;
 	}
 }
+
+// The thesis' flat nose self-locks with friction (issue 25): the runner says so before the run, for that nose only,
+// and the prediction holds: above the threshold the specimen stays in front of the anvils and the hammer gives up
+// more than 80 % of its energy (measured by the run, not by the warning); below it, it passes.
+TEST(CharpyFriction, FlatNoseSelfLockingIsPredictedBeforeTheRun)
+{
+	CharpyParameters p;
+	p.friction = 0.06;
+	EXPECT_NE(charpySelfLockWarning(p).find("--geometry=standard"), std::string::npos);
+	const CharpyResult locked = runCharpy(p);
+	EXPECT_FALSE(locked.warning.empty());
+	EXPECT_FALSE(locked.passed_anvils);
+	EXPECT_GT(locked.energy_loss_J, 0.8 * locked.E0_J);
+	p.friction = 0.03;
+	EXPECT_TRUE(charpySelfLockWarning(p).empty());
+	const CharpyResult free = runCharpy(p);
+	EXPECT_TRUE(free.passed_anvils);
+	CharpyParameters standard;
+	applyStandardGeometry(standard);
+	standard.friction = 0.25;
+	EXPECT_TRUE(charpySelfLockWarning(standard).empty());
+}
