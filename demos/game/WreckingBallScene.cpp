@@ -43,13 +43,13 @@ struct WreckingBallScene::State
 		spec.start_m = start;
 		spec.end_m = end;
 		spec.segments = segments;
-		spec.section = plastic::iSection(p.section_depth_m, p.flange_width_m, p.web_thickness_m, p.flange_thickness_m);
-		spec.material.yield_stress_pa = p.yield_stress_pa;
-		spec.material.youngs_modulus_pa = p.youngs_modulus_pa;
-		spec.material.density_kg_m3 = p.density_kg_m3;
+		spec.joint.section = plastic::iSection(p.section_depth_m, p.flange_width_m, p.web_thickness_m, p.flange_thickness_m);
+		spec.joint.material.yield_stress_pa = p.yield_stress_pa;
+		spec.joint.material.youngs_modulus_pa = p.youngs_modulus_pa;
+		spec.joint.material.density_kg_m3 = p.density_kg_m3;
 		spec.bending_axis = btVector3(0, 0, 1);
-		spec.method = p.method;
-		spec.max_plastic_rotation_rad = p.max_plastic_rotation_rad;
+		spec.joint.method = p.method;
+		spec.joint.max_plastic_rotation_rad = p.max_plastic_rotation_rad;
 		return spec;
 	}
 

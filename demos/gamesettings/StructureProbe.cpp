@@ -86,11 +86,11 @@ ProbeRun runRigid(const ProbeCase& c, JointMethod method, const ProbeSetting& se
 		spec.start_m = m.start_m;
 		spec.end_m = m.end_m;
 		spec.segments = m.segments;
-		spec.section = m.section;
-		spec.material = steel();
+		spec.joint.section = m.section;
+		spec.joint.material = steel();
 		spec.bending_axis = btVector3(0, 0, 1);
-		spec.method = method;
-		spec.solver = setting.joint;
+		spec.joint.method = method;
+		spec.joint.solver = setting.joint;
 		beams.push_back(std::make_unique<Beam>(world, spec, previous));
 		for (btRigidBody* b : beams.back()->segments()) chain.push_back(b);
 		previous = chain.back();

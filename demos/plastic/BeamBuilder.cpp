@@ -29,8 +29,8 @@ Beam::Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* su
 	basis.setValue(bending.x(), other.x(), axis.x(), bending.y(), other.y(), axis.y(), bending.z(), other.z(), axis.z());
 	m_segmentLength_m = length_m / spec.segments;
 	// the segment box: depth (section z) across the main bending axis, width (section y) along it
-	m_shape = std::make_unique<btBoxShape>(btVector3(btScalar(spec.section.width_m / 2), btScalar(spec.section.depth_m / 2), btScalar(m_segmentLength_m / 2)));
-	const btScalar mass = btScalar(spec.material.density_kg_m3 * spec.section.area_m2 * m_segmentLength_m);
+	m_shape = std::make_unique<btBoxShape>(btVector3(btScalar(spec.joint.section.width_m / 2), btScalar(spec.joint.section.depth_m / 2), btScalar(m_segmentLength_m / 2)));
+	const btScalar mass = btScalar(spec.joint.material.density_kg_m3 * spec.joint.section.area_m2 * m_segmentLength_m);
 	btVector3 inertia;
 	m_shape->calculateLocalInertia(mass, inertia);
 	// the box's local x is bending axis 1, y bending axis 2, z the member
@@ -46,16 +46,10 @@ Beam::Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* su
 		m_segments.push_back(body);
 		if (previous)
 		{
-			JointSpec joint;
-			joint.method = spec.method;
+			JointSpec joint = spec.joint;
 			joint.pivot_m = spec.start_m + axis * btScalar(i * m_segmentLength_m);
 			joint.basis = basis;
-			joint.section = spec.section;
-			joint.material = spec.material;
 			joint.segment_length_m = m_segmentLength_m;
-			joint.max_plastic_rotation_rad = spec.max_plastic_rotation_rad;
-			joint.solver = spec.solver;
-			joint.yield_surface = spec.yield_surface;
 			m_joints.push_back(makeJoint(joint, *previous, *body));
 			m_specs.push_back(joint);
 			m_world.addConstraint(m_joints.back().constraint.get(), true);

@@ -15,13 +15,11 @@ struct BeamSpec
 	btVector3 start_m{0, 0, 0};
 	btVector3 end_m{1, 0, 0};
 	int segments = 4;
-	SectionProperties section;
-	Material material;
 	btVector3 bending_axis{0, 0, 1};  // world axis of the main bending (a hinge's axis), across the member
-	JointMethod method = JointMethod::PlasticHinge;
-	double max_plastic_rotation_rad = 1e9;
-	JointSolverSettings solver;  // every joint's solver settings (SolverSettings.h)
-	YieldSurface yield_surface = YieldSurface::PerDof;  // elastic-plastic2: which DOFs yield together
+	// every joint of the member (and its support): method, section, material, limits, solver settings, yield
+	// surface; the beam sets each one's pivot, basis and segment length. The segments' boxes and masses come from
+	// its section and material.
+	JointSpec joint;
 };
 
 class Beam

@@ -30,12 +30,12 @@ plastic::BeamSpec beamSpec(const DropWeightParameters& p)
 	spec.start_m = btVector3(0, 0, 0);
 	spec.end_m = btVector3(btScalar(p.span_m), 0, 0);
 	spec.segments = p.segments;
-	spec.section = plastic::rectangle(p.section_width_m, p.section_depth_m);
-	spec.material.yield_stress_pa = p.yield_stress_pa;
-	spec.material.youngs_modulus_pa = p.youngs_modulus_pa;
-	spec.material.density_kg_m3 = p.density_kg_m3;
+	spec.joint.section = plastic::rectangle(p.section_width_m, p.section_depth_m);
+	spec.joint.material.yield_stress_pa = p.yield_stress_pa;
+	spec.joint.material.youngs_modulus_pa = p.youngs_modulus_pa;
+	spec.joint.material.density_kg_m3 = p.density_kg_m3;
 	spec.bending_axis = btVector3(0, 0, 1);
-	spec.method = p.solver.method;
+	spec.joint.method = p.solver.method;
 	return spec;
 }
 

@@ -22,12 +22,12 @@ namespace
 plastic::BeamSpec memberSpec(const PortalParameters& p, const btVector3& start, const btVector3& end, int segments)
 {
 	plastic::BeamSpec spec;
-	spec.section = plastic::rectangle(p.section_width_m, p.section_depth_m);
-	spec.material.yield_stress_pa = p.yield_stress_pa;
-	spec.material.youngs_modulus_pa = p.youngs_modulus_pa;
-	spec.material.density_kg_m3 = p.density_kg_m3;
+	spec.joint.section = plastic::rectangle(p.section_width_m, p.section_depth_m);
+	spec.joint.material.yield_stress_pa = p.yield_stress_pa;
+	spec.joint.material.youngs_modulus_pa = p.youngs_modulus_pa;
+	spec.joint.material.density_kg_m3 = p.density_kg_m3;
 	spec.bending_axis = btVector3(0, 0, 1);
-	spec.method = p.solver.method;
+	spec.joint.method = p.solver.method;
 	spec.start_m = start;
 	spec.end_m = end;
 	spec.segments = segments;

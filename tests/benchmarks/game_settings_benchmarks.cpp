@@ -28,10 +28,10 @@ void stepCantilever(benchmark::State& state, SolverKind kind, int iterations)
 		BeamSpec spec;
 		spec.end_m = btVector3(2, 0, 0);
 		spec.segments = int(state.range(0));
-		spec.section = rectangle(0.05, 0.10);
-		spec.material = steel();
+		spec.joint.section = rectangle(0.05, 0.10);
+		spec.joint.material = steel();
 		Beam beam(structure.world(), spec, &support);
-		const double mp = capacities(spec.section, spec.material).plastic_moment_y_nm;
+		const double mp = capacities(spec.joint.section, spec.joint.material).plastic_moment_y_nm;
 		PointLoad load(*beam.segments().back(), btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, btScalar(-0.9 * mp / 2), 0));
 		const double step_s = settings.internal_step_s;
 		for (int i = 0; i < 240; i++)  // one second to the steady state

@@ -54,13 +54,13 @@ Outcome load(const SectionProperties& section, YieldSurface surface, double late
 	spec.start_m = btVector3(0, 0, 0);
 	spec.end_m = btVector3(2, 0, 0);
 	spec.segments = 4;
-	spec.section = section;
-	spec.material = steel();
+	spec.joint.section = section;
+	spec.joint.material = steel();
 	spec.bending_axis = btVector3(0, 0, 1);
-	spec.method = JointMethod::ElasticPlastic2;
-	spec.yield_surface = surface;
+	spec.joint.method = JointMethod::ElasticPlastic2;
+	spec.joint.yield_surface = surface;
 	Beam beam(rig.world, spec, &rig.support);
-	const SectionCapacities cap = capacities(spec.section, spec.material);
+	const SectionCapacities cap = capacities(spec.joint.section, spec.joint.material);
 	const double P = lateralFactor * cap.plastic_moment_y_nm / 2.0;
 	const btVector3 force(0, btScalar(-P * std::cos(angle_rad)), btScalar(-P * std::sin(angle_rad)));
 	btRigidBody* tip = beam.segments().back();
@@ -129,10 +129,10 @@ TEST(CombinedLoad, ASurfaceTheSectionCannotGiveIsRefusedByName)
 {
 	Rig rig;
 	BeamSpec spec;
-	spec.section = roundBar(0.05);
-	spec.method = JointMethod::ElasticPlastic2;
-	spec.section.biaxial_interaction = BiaxialInteraction::None;  // a section whose interaction is not known
-	spec.yield_surface = YieldSurface::Biaxial;
+	spec.joint.section = roundBar(0.05);
+	spec.joint.method = JointMethod::ElasticPlastic2;
+	spec.joint.section.biaxial_interaction = BiaxialInteraction::None;  // a section whose interaction is not known
+	spec.joint.yield_surface = YieldSurface::Biaxial;
 	try
 	{
 		Beam beam(rig.world, spec, &rig.support);
@@ -142,7 +142,7 @@ TEST(CombinedLoad, ASurfaceTheSectionCannotGiveIsRefusedByName)
 	{
 		EXPECT_NE(std::string(e.what()).find("yield_surface"), std::string::npos) << e.what();
 	}
-	spec.method = JointMethod::PlasticHinge;
-	spec.yield_surface = YieldSurface::Biaxial;
+	spec.joint.method = JointMethod::PlasticHinge;
+	spec.joint.yield_surface = YieldSurface::Biaxial;
 	EXPECT_THROW(Beam(rig.world, spec, &rig.support), std::invalid_argument);
 }

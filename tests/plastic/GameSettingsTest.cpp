@@ -198,9 +198,9 @@ DropOutcome dropWeight(const WorldSolverSettings& settings)
 		BeamSpec spec;
 		spec.end_m = btVector3(2, 0, 0);
 		spec.segments = 4;
-		spec.section = rectangle(0.05, 0.10);
-		spec.material = steel();
-		spec.method = JointMethod::PlasticHinge;
+		spec.joint.section = rectangle(0.05, 0.10);
+		spec.joint.material = steel();
+		spec.joint.method = JointMethod::PlasticHinge;
 		Beam beam(world, spec, &support);
 		btBoxShape boxShape(btVector3(0.2f, 0.2f, 0.2f));
 		btVector3 inertia;
