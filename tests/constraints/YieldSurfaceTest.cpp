@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "PhysicsWorld.h"
 
@@ -48,7 +49,9 @@ struct Result
 // stiffnessNmPerRad > 0: DOFs 4 and 5 are elastic-plastic springs of that stiffness instead of rigid-plastic locks;
 // rampSteps > 0: the load grows linearly from 0 over that many steps, then stays (an undamped spring under a sudden
 // load would swing to twice its static force)
-Result run(Surface surface, int dof0, int dof1, const Load& load, int steps, double stiffnessNmPerRad = 0, int rampSteps = 0)
+// turnRadPerS: the bending moment's direction turns at this rate about x (a load that is not proportional)
+Result run(Surface surface, int dof0, int dof1, const Load& load, int steps, double stiffnessNmPerRad = 0, int rampSteps = 0,
+		   double turnRadPerS = 0)
 {
 	PhysicsWorld w;
 	const double mass = 100.0;
@@ -78,7 +81,8 @@ Result run(Surface surface, int dof0, int dof1, const Load& load, int steps, dou
 	for (int s = 0; s < steps; s++)
 	{
 		const btScalar share = rampSteps > 0 ? btScalar(std::min(1.0, double(s + 1) / rampSteps)) : btScalar(1.0);
-		const btVector3 force = fullForce * share, torque = fullTorque * share;
+		const btVector3 force = fullForce * share;
+		const btVector3 torque = fullTorque.rotate(btVector3(1, 0, 0), btScalar(turnRadPerS * s * kDt)) * share;
 		body->applyCentralForce(force);
 		body->applyTorque(torque);
 		w.world.stepSimulation(btScalar(kDt), 0, btScalar(kDt));
@@ -144,7 +148,7 @@ TEST(YieldSurface, GaugesAreOneOnTheSectionsInteractionCurves)
 	{
 		double uy, uz;
 		rectangleFibres(beta, uy, uz);
-		EXPECT_NEAR(bt6DofElasticPlastic2Constraint::getYieldSurfaceGauge(bt6DofElasticPlastic2Constraint::YIELD_RECTANGLE_BIAXIAL, btScalar(uy), btScalar(uz)), 1.0, 0.01)
+		EXPECT_NEAR(bt6DofElasticPlastic2Constraint::getYieldSurfaceGauge(bt6DofElasticPlastic2Constraint::YIELD_RECTANGLE_BIAXIAL, btScalar(uy), btScalar(uz)), 1.0, 0.002)
 			<< "neutral axis at " << beta << " rad: (" << uy << ", " << uz << ")";
 	}
 	// a 45-degree moment on a square: 2/3 of Mp about each axis, 0.943 Mp in all
@@ -247,6 +251,69 @@ TEST(YieldSurface, ElasticSpringsReturnToTheCircle)
 	EXPECT_GT(r.bookedJ, 0.1);
 	EXPECT_NEAR(std::hypot(r.jointMomentYNm, r.jointMomentZNm) / kMomentNm, 1.0, 0.01);
 	EXPECT_NEAR(r.bookedJ, r.workJ - r.kineticJ - r.elasticJ, 0.01 * r.workJ);
+}
+
+// Every quadrant: the surfaces are symmetric in each force, so a moment with negative or mixed components yields at
+// the same magnitude, and the flow has the signs of the moment's components.
+TEST(YieldSurface, NegativeAndMixedSignMomentsYieldAlike)
+{
+	for (double angle : {0.5 + M_PI, -0.8, 2.2})
+	{
+		Result inside = run(bt6DofElasticPlastic2Constraint::YIELD_CIRCLE, 4, 5, bending(0.97 * kMomentNm, angle), 240);
+		Result outside = run(bt6DofElasticPlastic2Constraint::YIELD_CIRCLE, 4, 5, bending(1.03 * kMomentNm, angle), 120);
+		EXPECT_LT(inside.maxRotationRad, 1e-3) << angle;
+		EXPECT_TRUE(yields(outside)) << angle;
+	}
+	// the rectangle at -0.3 rad: on its curve and normal to it, with uz < 0
+	Result r = run(bt6DofElasticPlastic2Constraint::YIELD_RECTANGLE_BIAXIAL, 4, 5, bending(1.1 * kMomentNm, -0.3), 60);
+	ASSERT_TRUE(yields(r));
+	double uy = r.jointMomentYNm / kMomentNm, uz = r.jointMomentZNm / kMomentNm;
+	EXPECT_LT(uz, 0);
+	EXPECT_NEAR(uy + 0.75 * uz * uz, 1.0, 0.005);
+	EXPECT_NEAR(std::atan2(r.angularZ, r.angularY), std::atan2(1.5 * uz, 1.0), 0.01);
+}
+
+// Elastic-plastic springs on the rectangle's curve under a moment that turns (not proportional: the point slides
+// along the surface and each DOF's cap changes from step to step): every bit of flow is booked, the books balance.
+TEST(YieldSurface, SpringsUnderATurningMomentBookAllTheirFlow)
+{
+	const double k = 100.0;
+	Result r = run(bt6DofElasticPlastic2Constraint::YIELD_RECTANGLE_BIAXIAL, 4, 5, bending(1.02 * kMomentNm, 0.0), 720, k, 240, 0.5);
+	EXPECT_GT(r.bookedJ, 0.1);
+	EXPECT_NEAR(r.bookedJ, r.workJ - r.kineticJ - r.elasticJ, 0.01 * r.workJ) << "work " << r.workJ << " J, kinetic " << r.kineticJ << " J, elastic " << r.elasticJ << " J";
+}
+
+// Switched off again (YIELD_BOX, any DOFs), a constraint steps bit for bit as one that never had a surface.
+TEST(YieldSurface, SwitchedOffIsTheBoxBitForBit)
+{
+	auto final = [](bool withSurface) {
+		PhysicsWorld w;
+		btRigidBody* body = w.addBox(btVector3(0.1, 0.1, 0.1), 100.0, btVector3(0, 0, 0));
+		auto* c = new bt6DofElasticPlastic2Constraint(*body, btTransform::getIdentity());
+		for (int i = 0; i < 6; i++)
+		{
+			c->setStiffness(i, 0, false);
+			c->setMaxForce(i, btScalar(i == 4 || i == 5 ? kMomentNm : 1e6));
+		}
+		if (withSurface)
+		{
+			c->setYieldSurface(bt6DofElasticPlastic2Constraint::YIELD_CIRCLE, 4, 5);
+			c->setYieldSurface(bt6DofElasticPlastic2Constraint::YIELD_BOX, -1, -1);
+		}
+		w.world.addConstraint(c);
+		for (int s = 0; s < 120; s++)
+		{
+			body->applyTorque(btVector3(0, btScalar(1.2 * kMomentNm), btScalar(0.6 * kMomentNm)));
+			w.world.stepSimulation(btScalar(kDt), 0, btScalar(kDt));
+		}
+		EXPECT_EQ(c->getYieldSurface(), bt6DofElasticPlastic2Constraint::YIELD_BOX);
+		EXPECT_EQ(c->getYieldSurfaceDof(0), -1);
+		const btTransform t = body->getWorldTransform();
+		return std::vector<double>{t.getOrigin().x(), t.getRotation().x(), t.getRotation().y(), t.getRotation().z(), t.getRotation().w(), double(c->getAbsorbedEnergy())};
+	};
+	const std::vector<double> never = final(false), off = final(true);
+	EXPECT_GT(never[5], 0.0);  // it yielded
+	for (size_t i = 0; i < never.size(); i++) EXPECT_EQ(never[i], off[i]) << i;
 }
 
 // A constraint that never calls setYieldSurface is the box: the same numbers as a YIELD_BOX one.

@@ -1,8 +1,7 @@
 // Cantilevers of elastic-plastic2 joints under combined loads, against plastic analysis with interaction
 // (JointSpec::yield_surface, bt6DofElasticPlastic2Constraint::setYieldSurface). A 2 m steel member in 4 segments,
-// fixed at its start, carries a tip load P across it at 45 degrees between its principal axes (and, in the last
-// case, an axial tension N along the tip's axis). The root moment P L lies on the section's interaction curve at
-// collapse:
+// fixed at its start, carries a tip load P across it between its principal axes. The root moment P L lies on the
+// section's interaction curve at collapse:
 // - a square's fully plastic rectangle: 2/3 Mp about each axis, P L = 0.943 Mp (each axis alone: 1.414);
 // - a tube: P L = Mp in any direction;
 // - a 50 x 100 mm rectangle at atan(1/2): 2/3 Mp about each axis again, P L = 0.745 Mp (each alone: 1.118).
