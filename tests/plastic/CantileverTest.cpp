@@ -7,29 +7,17 @@
 #include <string>
 
 #include "BeamBuilder.h"
+#include "CantileverRig.h"
 #include "EnergyLedger.h"
 
 using namespace plastic;
 
 namespace
 {
-struct Rig
+// sequential impulse at the given iterations
+struct Rig : CantileverRig
 {
-	btDefaultCollisionConfiguration configuration;
-	btCollisionDispatcher dispatcher{&configuration};
-	btDbvtBroadphase broadphase;
-	btSequentialImpulseConstraintSolver solver;
-	btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
-	btBoxShape supportShape{btVector3(0.1, 0.1, 0.1)};
-	btRigidBody support{btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &supportShape)};
-	Rig(int iterations)
-	{
-		world.setGravity(btVector3(0, 0, 0));
-		world.getSolverInfo().m_numIterations = iterations;
-		support.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(-0.1, 0, 0)));
-		world.addRigidBody(&support, 0, 0);
-	}
-	~Rig() { world.removeRigidBody(&support); }
+	explicit Rig(int iterations) : CantileverRig(iterations, false) {}
 };
 
 struct Outcome

@@ -14,29 +14,17 @@
 #include <string>
 
 #include "BeamBuilder.h"
+#include "CantileverRig.h"
 #include "EnergyLedger.h"
 
 using namespace plastic;
 
 namespace
 {
-struct Rig
+// the toolkit's default solver at game settings
+struct Rig : CantileverRig
 {
-	btDefaultCollisionConfiguration configuration;
-	btCollisionDispatcher dispatcher{&configuration};
-	btDbvtBroadphase broadphase;
-	btDirectJointSolver solver;
-	btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
-	btBoxShape supportShape{btVector3(0.1, 0.1, 0.1)};
-	btRigidBody support{btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &supportShape)};
-	Rig()
-	{
-		world.setGravity(btVector3(0, 0, 0));
-		world.getSolverInfo().m_numIterations = 10;
-		support.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(-0.1, 0, 0)));
-		world.addRigidBody(&support, 0, 0);
-	}
-	~Rig() { world.removeRigidBody(&support); }
+	Rig() : CantileverRig(10, true) {}
 };
 
 struct Outcome
