@@ -50,7 +50,17 @@ Beam::Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* su
 			joint.pivot_m = spec.start_m + axis * btScalar(i * m_segmentLength_m);
 			joint.basis = basis;
 			joint.segment_length_m = m_segmentLength_m;
-			m_joints.push_back(makeJoint(joint, *previous, *body));
+			try
+			{
+				m_joints.push_back(makeJoint(joint, *previous, *body));
+			}
+			catch (...)
+			{
+				// a refused joint: the world must not keep the bodies and joints this beam is about to free
+				for (Joint& j : m_joints) m_world.removeConstraint(j.constraint.get());
+				for (btRigidBody* b : m_segments) m_world.removeRigidBody(b);
+				throw;
+			}
 			m_specs.push_back(joint);
 			m_world.addConstraint(m_joints.back().constraint.get(), true);
 		}

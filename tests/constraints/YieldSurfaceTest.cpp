@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "PhysicsWorld.h"
@@ -53,10 +54,12 @@ struct Result
 Result run(Surface surface, int dof0, int dof1, const Load& load, int steps, double stiffnessNmPerRad = 0, int rampSteps = 0,
 		   double turnRadPerS = 0)
 {
+	std::unique_ptr<bt6DofElasticPlastic2Constraint> owner;  // outlives the world, which removes it
 	PhysicsWorld w;
 	const double mass = 100.0;
 	btRigidBody* body = w.addBox(btVector3(0.1, 0.1, 0.1), mass, btVector3(0, 0, 0));
 	auto* c = new bt6DofElasticPlastic2Constraint(*body, btTransform::getIdentity());
+	owner.reset(c);
 	for (int i = 0; i < 6; i++)
 	{
 		c->setStiffness(i, 0, false);  // rigid-plastic
@@ -287,9 +290,11 @@ TEST(YieldSurface, SpringsUnderATurningMomentBookAllTheirFlow)
 TEST(YieldSurface, SwitchedOffIsTheBoxBitForBit)
 {
 	auto final = [](bool withSurface) {
+		std::unique_ptr<bt6DofElasticPlastic2Constraint> owner;
 		PhysicsWorld w;
 		btRigidBody* body = w.addBox(btVector3(0.1, 0.1, 0.1), 100.0, btVector3(0, 0, 0));
 		auto* c = new bt6DofElasticPlastic2Constraint(*body, btTransform::getIdentity());
+		owner.reset(c);
 		for (int i = 0; i < 6; i++)
 		{
 			c->setStiffness(i, 0, false);
