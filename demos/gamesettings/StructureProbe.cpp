@@ -279,9 +279,7 @@ double collapseLoad_n(const ProbeCase& /*c*/)
 
 ProbeRun runProbe(const ProbeCase& c, JointMethod method, const ProbeSetting& setting, double loadFactor, double seconds)
 {
-	const std::vector<std::string> errors = validate(setting.world);
-	if (!errors.empty())
-		throw std::invalid_argument(errors.front());
+	// the settings are validated where the world is configured (StructureWorld, configureWorld)
 	return setting.multibody ? runMultiBody(c, setting, loadFactor, seconds) : runRigid(c, method, setting, loadFactor, seconds);
 }
 

@@ -57,8 +57,7 @@ Beam::Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* su
 			catch (...)
 			{
 				// a refused joint: the world must not keep the bodies and joints this beam is about to free
-				for (Joint& j : m_joints) m_world.removeConstraint(j.constraint.get());
-				for (btRigidBody* b : m_segments) m_world.removeRigidBody(b);
+				removeFromWorld();
 				throw;
 			}
 			m_specs.push_back(joint);
@@ -68,7 +67,9 @@ Beam::Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* su
 	}
 }
 
-Beam::~Beam()
+Beam::~Beam() { removeFromWorld(); }
+
+void Beam::removeFromWorld()
 {
 	for (Joint& j : m_joints) m_world.removeConstraint(j.constraint.get());
 	for (btRigidBody* b : m_segments) m_world.removeRigidBody(b);

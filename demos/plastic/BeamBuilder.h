@@ -40,6 +40,8 @@ public:
 	void updateForStep(double step_s);
 
 private:
+	void removeFromWorld();  // the joints and segments added so far
+
 	btDiscreteDynamicsWorld& m_world;
 	double m_segmentLength_m;
 	std::unique_ptr<btCollisionShape> m_shape;

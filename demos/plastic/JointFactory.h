@@ -30,7 +30,7 @@ const char* jointMethodName(JointMethod method);
 // Which of an elastic-plastic2 joint's DOFs yield together (bt6DofElasticPlastic2Constraint::setYieldSurface)
 enum class YieldSurface
 {
-	PerDof,        // each DOF at its own capacity (the default)
+	PerDof,   // each DOF at its own capacity (the default)
 	Biaxial,  // the two bending moments on the section's BiaxialInteraction curve
 };
 
