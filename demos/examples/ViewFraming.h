@@ -9,6 +9,7 @@
 #include "SteppedScene.h"
 
 struct CommonCameraInterface;
+struct CommonGraphicsApp;
 
 struct ScreenRect  // pixels, y down, [left, right) x [top, bottom)
 {
@@ -47,7 +48,6 @@ ScreenRect textRect(int lines, int characters, int left_px, int top_px);
 ScreenRect textRect(const std::string& text, int left_px, int top_px);  // its lines and longest line
 
 // Draws text lines from (left_px, top_px), kTextLine_px apart.
-struct CommonGraphicsApp;
 void drawTextLines(CommonGraphicsApp* app, const std::string& text, int left_px, int top_px);
 
 struct ViewCamera
