@@ -61,9 +61,9 @@ struct ViewCamera
 struct SceneFraming
 {
 	ViewCamera camera;
-	ScreenRect ledger;  // where the ledger goes: the top left of the GUI's free rectangle
+	ScreenRect ledger;                          // where the ledger goes: the top left of the GUI's free rectangle
 	int ledger_left_px = 0, ledger_top_px = 0;  // what drawText takes for its first line
-	ScreenRect view;    // the free viewport the envelope is framed in: beside or below the ledger
+	ScreenRect view;                            // the free viewport the envelope is framed in: beside or below the ledger
 };
 
 // The reserved size of a ledger and the margin kept around the envelope.

@@ -57,7 +57,7 @@ struct ExampleCase
 {
 	const char* name;
 	CommonExampleInterface::CreateFunc* create;
-	double browser_s;  // browser time at 60 Hz frames: the run, its collapse and a while after (the example stops stepping when the scene is done)
+	double browser_s;       // browser time at 60 Hz frames: the run, its collapse and a while after (the example stops stepping when the scene is done)
 	ViewCamera old_camera;  // f3f52bf's camera (SceneControls.cpp, WreckingBallControls.cpp)
 };
 
@@ -130,8 +130,8 @@ std::vector<const btCollisionObject*> structureBodies(const btDiscreteDynamicsWo
 // One run of an example in a window of that size; what its structure covered and where its text went.
 struct RunResult
 {
-	Bounds structure;    // over every frame
-	Bounds text;         // every ledger line drawn, as textRect bounds it
+	Bounds structure;  // over every frame
+	Bounds text;       // every ledger line drawn, as textRect bounds it
 	int frames = 0;
 	int bad_frames = 0;  // frames whose structure left the free rectangle or met that frame's text
 	std::string first_bad;
@@ -238,7 +238,8 @@ TEST_P(OldCamera, FailsTheCheck)
 	EXPECT_GT(r.bad_frames, 0) << "the old camera passes: the check does not tell framings apart";
 }
 
-INSTANTIATE_TEST_SUITE_P(Examples, OldCamera, ::testing::Range(0, 5), [](const ::testing::TestParamInfo<int>& info) { return std::string(kCases[info.param].name); });
+INSTANTIATE_TEST_SUITE_P(Examples, OldCamera, ::testing::Range(0, 5), [](const ::testing::TestParamInfo<int>& info)
+						 { return std::string(kCases[info.param].name); });
 
 // textRect bounds the ink drawText puts down: the ledger's widest lines and a line of the widest glyphs, drawn on the
 // cleared frame, read back; every dark pixel lies inside the rectangle textRect gives for them.
