@@ -8,11 +8,14 @@
 #include "Bullet3Common/b3CommandLineArgs.h"
 #include "Utils/b3Clock.h"
 
+#include "ViewFraming.h"
+
 int main(int argc, char* argv[])
 {
 	b3CommandLineArgs args(argc, argv);
 	double minUpdateTime_us = 1000.;
 	args.GetCmdLineArgument("minUpdateTimeMicroSecs", minUpdateTime_us);
+	setBrowserGuiShown(!args.CheckCmdLineFlag("nogui"));  // the examples frame their scenes beside the GUI's panels
 
 	ExampleEntriesAll examples;
 	examples.initExampleEntries();

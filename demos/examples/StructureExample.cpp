@@ -1,10 +1,13 @@
 // One example class for every scene of SceneControls: sliders and a method choice build the scene, the browser's clock
-// steps it (time scale: simulated seconds per browser second), the browser draws its world.
+// steps it (time scale: simulated seconds per browser second), the browser draws its world. The camera frames the
+// scene's view envelope in the part of the window the GUI and the ledger leave free (ViewFraming.h), again whenever
+// the window's size changes.
 #include "StructureExample.h"
 
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "CommonInterfaces/CommonExampleInterface.h"
@@ -15,6 +18,7 @@
 
 #include "SceneControls.h"
 #include "StructureView.h"
+#include "ViewFraming.h"
 #include "WreckingBallControls.h"
 
 namespace
@@ -22,6 +26,8 @@ namespace
 const plastic::JointMethod kMethods[] = {plastic::JointMethod::HingeMotor, plastic::JointMethod::PlasticHinge, plastic::JointMethod::ElasticPlastic,
 										 plastic::JointMethod::ElasticPlastic2};
 const char* kMethodNames[] = {"hinge-motor", "plastic-hinge", "elastic-plastic", "elastic-plastic2"};
+const int kLedgerStatusLines = 3;
+const int kLedgerSpareCharacters = 6;
 
 class StructureExample : public CommonExampleInterface
 {
@@ -57,6 +63,7 @@ public:
 
 	void renderScene() override
 	{
+		if (windowSize() != m_framedSize) resetCamera();
 		if (m_scene)
 		{
 			colourStructure(m_guiHelper, *m_scene);
@@ -65,7 +72,8 @@ public:
 			drawJointMarkers(m_guiHelper, *m_scene);
 		}
 		if (CommonGraphicsApp* app = m_guiHelper->getAppInterface())
-			drawStructurePanel(app, m_scene ? structures::ledgerText(m_scene->ledger()) : m_kind.name + ": invalid parameters:\n" + m_error);
+			drawTextLines(app, m_scene ? structures::ledgerText(m_scene->ledger()) : m_kind.name + ": invalid parameters:\n" + m_error, m_framing.ledger_left_px,
+						  m_framing.ledger_top_px);
 	}
 
 	void physicsDebugDraw(int debugFlags) override
@@ -77,10 +85,20 @@ public:
 		}
 	}
 
+	// the scene's view envelope framed for the window as it is now, the ledger above or beside it
 	void resetCamera() override
 	{
-		m_guiHelper->resetCamera(m_kind.camera_distance_m, m_kind.camera_yaw_deg, m_kind.camera_pitch_deg, m_kind.camera_target_m[0], m_kind.camera_target_m[1],
-								 m_kind.camera_target_m[2]);
+		m_framedSize = windowSize();
+		FramingRequest request;
+		if (m_scene) request.envelope = m_scene->viewEnvelope();
+		request.yaw_deg = m_kind.camera_yaw_deg;
+		request.pitch_deg = m_kind.camera_pitch_deg;
+		request.ledger_lines = m_ledgerLines;
+		request.ledger_characters = m_ledgerCharacters;
+		m_framing = frameScene(request, m_framedSize.first, m_framedSize.second, browserGuiShown());
+		if (!m_scene) return;  // invalid parameters: the camera stays, the message goes where the ledger would
+		const ViewCamera& c = m_framing.camera;
+		m_guiHelper->resetCamera(c.distance_m, c.yaw_deg, c.pitch_deg, c.target_m[0], c.target_m[1], c.target_m[2]);
 	}
 
 	bool mouseMoveCallback(float, float) override { return false; }
@@ -88,6 +106,13 @@ public:
 	bool keyboardCallback(int, int) override { return false; }
 
 private:
+	std::pair<int, int> windowSize() const
+	{
+		const CommonGraphicsApp* app = m_guiHelper->getAppInterface();
+		if (!app || !app->m_window) return {0, 0};
+		return {app->m_window->getWidth(), app->m_window->getHeight()};
+	}
+
 	std::vector<float> values() const { return std::vector<float>(m_sliderValues.begin(), m_sliderValues.end()); }
 
 	void registerControls()
@@ -139,6 +164,10 @@ private:
 			return;
 		}
 		showStructure(m_guiHelper, *m_scene);
+		// room for the ledger as it starts, the status lines the run adds (collapse, stop, broken joints) and longer numbers
+		const ScreenRect start = textRect(structures::ledgerText(m_scene->ledger()), 0, 0);
+		m_ledgerLines = (start.height() - kTextLineHeight_px) / kTextLine_px + 1 + kLedgerStatusLines;
+		m_ledgerCharacters = start.width() / kTextChar_px + kLedgerSpareCharacters;
 		resetCamera();
 	}
 
@@ -152,6 +181,10 @@ private:
 	std::unique_ptr<structures::SteppedScene> m_scene;
 	std::string m_error;
 	double m_targetTime_s = 0;
+	int m_ledgerLines = 12;
+	int m_ledgerCharacters = 40;
+	SceneFraming m_framing;
+	std::pair<int, int> m_framedSize{0, 0};
 };
 }  // namespace
 

@@ -1,7 +1,5 @@
 #include "StructureView.h"
 
-#include <sstream>
-
 #include "CommonInterfaces/CommonGUIHelperInterface.h"
 #include "CommonInterfaces/CommonGraphicsAppInterface.h"
 #include "CommonInterfaces/CommonRenderInterface.h"
@@ -86,17 +84,5 @@ void drawJointMarkers(GUIHelperInterface* guiHelper, structures::SteppedScene& s
 		// in front of the member (the cameras look along -z), so the depth test does not hide it inside the body
 		const float position[4] = {float(j.pivot_m.x()), float(j.pivot_m.y()), float(j.pivot_m.z() + kMarkerOffset_m), 1};
 		renderer->drawPoint(position, rgba, 12);
-	}
-}
-
-void drawStructurePanel(CommonGraphicsApp* app, const std::string& text, int left_px, int top_px)
-{
-	std::istringstream lines(text);
-	std::string line;
-	int y = top_px;
-	while (std::getline(lines, line))
-	{
-		app->drawText(line.c_str(), left_px, y, 0.4f);
-		y += 17;
 	}
 }

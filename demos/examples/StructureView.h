@@ -1,5 +1,6 @@
 // How a structure scene is shown: the colour of each body by the state of the joints at its ends (elastic, yielded,
-// broken), a marker at every joint pivot in the same colours, the ledger as text. Reads the scene; changes nothing.
+// broken), a marker at every joint pivot in the same colours (the ledger's text and the camera: ViewFraming.h). Reads
+// the scene; changes nothing.
 #pragma once
 
 #include <map>
@@ -34,5 +35,3 @@ void showStructure(GUIHelperInterface* guiHelper, structures::SteppedScene& scen
 void colourStructure(GUIHelperInterface* guiHelper, structures::SteppedScene& scene);
 // a point at every joint pivot in its state's colour, 0.15 m towards +z (after the world is rendered)
 void drawJointMarkers(GUIHelperInterface* guiHelper, structures::SteppedScene& scene);
-// text lines from (left_px, top_px); the default clears the browser's explorer panel
-void drawStructurePanel(CommonGraphicsApp* app, const std::string& text, int left_px = 255, int top_px = 45);

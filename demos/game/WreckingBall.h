@@ -120,6 +120,7 @@ public:
 	btDiscreteDynamicsWorld& world() override;
 	std::vector<structures::JointView> joints() const override;
 	structures::SceneLedger ledger() const override;
+	structures::WorldBox viewEnvelope() const override;
 	WreckingBallResult result() const;  // measured now
 	const btRigidBody& ball() const;
 	std::vector<const btRigidBody*> frameBodies() const;

@@ -36,11 +36,7 @@ structures::ControlledScene wreckingBallControls()
 	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<structures::SteppedScene>
 	{ return std::make_unique<WreckingBallScene>(wreckingBallFromSliders(v, m)); };
 	// from +z, a little above: the frame in its plane, the ball coming from the left
-	c.camera_distance_m = 5;
-	c.camera_yaw_deg = 180;
 	c.camera_pitch_deg = -8;
-	c.camera_target_m[0] = -0.3f;
-	c.camera_target_m[1] = 3.6f;
 	c.time_scale = 1;
 	return c;
 }
@@ -62,12 +58,7 @@ structures::ControlledScene buildingControls()
 	c.sliders.push_back({"bays", 1, 8, true, 4});
 	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<structures::SteppedScene>
 	{ return std::make_unique<WreckingBallScene>(buildingFromSliders(v, m)); };
-	// the default building (5 storeys of 3 m, 4 bays of 4 m) from +z, the ball coming from the left
-	c.camera_distance_m = 21;
-	c.camera_yaw_deg = 180;
-	c.camera_pitch_deg = -8;
-	c.camera_target_m[0] = 22;
-	c.camera_target_m[1] = 10.5f;
+	// the wrecking ball's view direction (from +z, a little above)
 	return c;
 }
 }  // namespace game

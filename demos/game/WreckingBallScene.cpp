@@ -419,3 +419,23 @@ WreckingBallResult runWreckingBall(const WreckingBallParameters& p)
 	return scene.result();
 }
 }  // namespace game
+
+namespace game
+{
+structures::WorldBox WreckingBallScene::viewEnvelope() const
+{
+	// The frame (bays x span by storeys x height on the ground), the ball's swing from its release (left of the frame)
+	// up to the chain's pivot, and the debris: broken members fall over to the right, as far as a storey's height.
+	const WreckingBallParameters& p = m->p;
+	const double radius_m = p.chain_length_m + p.ball_radius_m;  // pivot to the ball's centre
+	const double bottom_x_m = -(p.section_depth_m / 2 + p.ball_radius_m + 0.02);
+	const double pivot_y_m = p.impact_height_m + radius_m;
+	const double release_x_m = bottom_x_m - radius_m * std::sin(std::min(p.release_angle_rad, 1.5707963));
+	const double pad_m = p.section_depth_m;
+	structures::WorldBox box;
+	box.min_m = btVector3(btScalar(release_x_m - p.ball_radius_m - pad_m), 0, btScalar(-p.ball_radius_m - pad_m));
+	box.max_m = btVector3(btScalar(p.span_m * p.bays + p.height_m + pad_m), btScalar(std::max(pivot_y_m, p.height_m * p.storeys) + pad_m),
+						  btScalar(p.ball_radius_m + pad_m));
+	return box;
+}
+}  // namespace game

@@ -85,6 +85,7 @@ public:
 	btDiscreteDynamicsWorld& world() override;
 	std::vector<JointView> joints() const override;
 	SceneLedger ledger() const override;
+	WorldBox viewEnvelope() const override;
 	CantileverResult result() const;  // measured now
 
 private:

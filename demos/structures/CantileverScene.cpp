@@ -217,3 +217,28 @@ CantileverResult runCantilever(const CantileverParameters& p)
 	return scene.result();
 }
 }  // namespace structures
+
+namespace structures
+{
+WorldBox CantileverScene::viewEnvelope() const
+{
+	// The member turns about its root (the origin), the tip down, through the arc its length sweeps: to the analytic
+	// stop of a dead load (and 10 % past it), a little past the collapse under a ramp (held there, the lever shortens as
+	// it turns), all the way round under a follower load above collapse (it never stops).
+	const CantileverParameters& p = m->p;
+	const double pi = 3.14159265358979;
+	const double stop_rad = m->answer.stop_rotation_rad;
+	double turn_rad = pi;
+	if (p.ramp_rate_per_s > 0)
+		turn_rad = 0.3;
+	else if (std::isfinite(stop_rad))
+		turn_rad = std::min(pi, 1.1 * stop_rad + 0.05);
+	const double L = p.length_m;
+	const double pad_m = p.section_depth_m;  // the member's depth, half on each side, and as much again
+	WorldBox box;
+	box.min_m = btVector3(btScalar(std::min(0.0, L * std::cos(turn_rad)) - pad_m), btScalar(-L * (turn_rad < pi / 2 ? std::sin(turn_rad) : 1.0) - pad_m),
+						  btScalar(-p.section_width_m));
+	box.max_m = btVector3(btScalar(L + pad_m), btScalar(pad_m), btScalar(p.section_width_m));
+	return box;
+}
+}  // namespace structures

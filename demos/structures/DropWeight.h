@@ -81,6 +81,7 @@ public:
 	btDiscreteDynamicsWorld& world() override;
 	std::vector<JointView> joints() const override;
 	SceneLedger ledger() const override;
+	WorldBox viewEnvelope() const override;
 	DropWeightResult result() const;  // measured now
 	const btRigidBody& ball() const;
 

@@ -283,3 +283,20 @@ DropWeightResult runDropWeight(const DropWeightParameters& p)
 	return scene.result();
 }
 }  // namespace structures
+
+namespace structures
+{
+WorldBox DropWeightScene::viewEnvelope() const
+{
+	// The beam (0..L along x), the weight on its top face at mid-span, and the mechanism: the halves turn by the
+	// analytic half rotation (half as much again, for the estimate's error) and the middle goes down L/2 sin of it.
+	const DropWeightParameters& p = m->p;
+	const double pi = 3.14159265358979;
+	const double theta_rad = std::min(pi / 2, 1.5 * m->answer.half_rotation_rad + 0.05);
+	const double pad_m = p.section_depth_m;
+	WorldBox box;
+	box.min_m = btVector3(btScalar(-pad_m), btScalar(-p.span_m / 2 * std::sin(theta_rad) - pad_m), btScalar(-p.section_width_m));
+	box.max_m = btVector3(btScalar(p.span_m + pad_m), btScalar(pad_m + 2 * p.weight_radius_m), btScalar(p.section_width_m));
+	return box;
+}
+}  // namespace structures

@@ -103,6 +103,7 @@ public:
 	btDiscreteDynamicsWorld& world() override;
 	std::vector<JointView> joints() const override;
 	SceneLedger ledger() const override;
+	WorldBox viewEnvelope() const override;
 	PortalResult result() const;  // measured now
 
 private:

@@ -247,3 +247,19 @@ PortalResult runPortal(const PortalParameters& p)
 	return scene.result();
 }
 }  // namespace structures
+
+namespace structures
+{
+WorldBox PortalScene::viewEnvelope() const
+{
+	// The frame (columns 0..h at x = 0 and L, the beam at h) and its mechanism: the columns sway and the beam sags by
+	// turns of a few mechanism rotations (the run holds the load once the collapse is seen and stops soon after).
+	const PortalParameters& p = m->p;
+	const double turn_rad = std::max(0.2, 4 * p.mechanism_rotation_rad);
+	const double pad_m = p.section_depth_m;
+	WorldBox box;
+	box.min_m = btVector3(btScalar(-turn_rad * p.height_m - pad_m), btScalar(-pad_m), btScalar(-p.section_width_m));
+	box.max_m = btVector3(btScalar(p.span_m + turn_rad * p.height_m + pad_m), btScalar(p.height_m + pad_m), btScalar(p.section_width_m));
+	return box;
+}
+}  // namespace structures

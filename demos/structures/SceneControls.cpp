@@ -99,11 +99,7 @@ ControlledScene cantileverControls()
 		requireValid(validateCantileverParameters(p));
 		return std::make_unique<CantileverScene>(p);
 	};
-	// from +z (yaw 180), the beam and its swing in the lower half (the ledger is drawn in the upper one)
-	c.camera_distance_m = 2.8f;
-	c.camera_yaw_deg = 180;
-	c.camera_target_m[0] = 1.0f;
-	c.camera_target_m[1] = 0.4f;
+	// from +z, level: the beam and the arc it turns through (its view envelope)
 	c.time_scale = 0.1f;  // it turns 1.5 rad in 0.15 s
 	return c;
 }
@@ -125,10 +121,8 @@ ControlledScene portalControls()
 		requireValid(validatePortalParameters(p));
 		return std::make_unique<PortalScene>(p);
 	};
-	c.camera_distance_m = 3.6f;
-	c.camera_yaw_deg = 180;
-	c.camera_target_m[0] = 2;
-	c.camera_target_m[1] = 2.9f;
+	// from +z, a little above: the frame in its plane, the beam's top face showing
+	c.camera_pitch_deg = -8;
 	c.time_scale = 2;
 	return c;
 }
@@ -151,10 +145,7 @@ ControlledScene dropWeightControls()
 		requireValid(validateDropWeightParameters(p));
 		return std::make_unique<DropWeightScene>(p);
 	};
-	c.camera_distance_m = 1.2f;
-	c.camera_yaw_deg = 180;
-	c.camera_target_m[0] = 1;
-	c.camera_target_m[1] = 0.3f;
+	// from +z, level: the beam, the weight on it and the depth it is pushed to
 	c.time_scale = 0.05f;  // the impact is over in 0.05 s
 	return c;
 }

@@ -1,6 +1,6 @@
 // What an ExampleBrowser example of a scene offers, without any GUI code (so the console side and the tests can read
 // it): its sliders (labels with units, ranges, starting values), how slider values become the scene's parameters
-// and build the scene (the same scene class the runner steps), its camera and its pace.
+// and build the scene (the same scene class the runner steps), its view direction and its pace.
 #pragma once
 
 #include <functional>
@@ -33,10 +33,9 @@ struct ControlledScene
 	// the scene of these slider values (one per slider, in order) and method; throws std::invalid_argument naming a
 	// value out of its range
 	std::function<std::unique_ptr<SteppedScene>(const std::vector<float>& values, plastic::JointMethod method)> build;
-	float camera_distance_m = 5;
-	float camera_yaw_deg = 0;
+	// the view direction; the examples frame the scene's view envelope from it (demos/examples/ViewFraming.h)
+	float camera_yaw_deg = 180;  // from +z
 	float camera_pitch_deg = 0;
-	float camera_target_m[3] = {0, 0, 0};
 	float time_scale = 1;  // simulated seconds per browser second
 };
 

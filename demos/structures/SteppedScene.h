@@ -38,6 +38,13 @@ struct SceneLedger
 	std::vector<std::string> status;  // what the run has found so far (collapse, stop, broken joints)
 };
 
+// A box in the world (m).
+struct WorldBox
+{
+	btVector3 min_m{0, 0, 0};
+	btVector3 max_m{0, 0, 0};
+};
+
 // The ledger as text lines (J, rad, s) for the screen.
 std::string ledgerText(const SceneLedger& ledger);
 
@@ -51,5 +58,8 @@ public:
 	virtual btDiscreteDynamicsWorld& world() = 0;
 	virtual std::vector<JointView> joints() const = 0;
 	virtual SceneLedger ledger() const = 0;
+	// The box every body stays in over the whole run, collapse and after (from the parameters: the structure's bounds
+	// and the reach of its mechanism): what the examples keep in view. Not the ground slab.
+	virtual WorldBox viewEnvelope() const = 0;
 };
 }  // namespace structures
