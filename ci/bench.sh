@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Benchmarks (Google Benchmark): builds joint_benchmarks, joint_benchmarks_unpatched and thread_benchmarks
-# (BT_THREADSAFE), runs them one after the other and writes report/BENCHMARKS.md (+ the raw JSON in
-# report/benchmarks/).
+# (BT_THREADSAFE) in build-bench/ (preset bench: Release, no -Werror, no browser), runs them one after the other and
+# writes report/BENCHMARKS.md (+ the raw JSON in report/benchmarks/).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/deps.sh
-build="${BUILD_DIR:-build}"
-bash ci/configure.sh -DBP_BUILD_TESTS=ON -DBP_BUILD_BENCHMARKS=ON
-cmake --build "$build" --target joint_benchmarks joint_benchmarks_unpatched thread_benchmarks
+build=build-bench
+cmake --preset bench
+cmake --build --preset bench --target joint_benchmarks joint_benchmarks_unpatched thread_benchmarks
 mkdir -p report/benchmarks
 for b in joint_benchmarks joint_benchmarks_unpatched thread_benchmarks; do
 	"$build/bin/$b" --benchmark_out="report/benchmarks/$b.json.tmp" --benchmark_out_format=json --benchmark_repetitions=1 "$@"

@@ -1,11 +1,6 @@
 #!/usr/bin/env bash
-# Configures build/ (unity build, Release). Extra arguments go to cmake, e.g. -DBULLET_SOURCE_DIR=/path/to/bullet3.
+# Configures build/ with the main preset (CMakePresets.json: Ninja, unity build, Release, tests off). Extra arguments
+# go to cmake, e.g. -DBULLET_SOURCE_DIR=/path/to/bullet3. The other trees: cmake --preset test|asan|double|bench.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-# A second build tree (build-asan, build-double) reuses the sdist build/ already downloaded.
-archive="$PWD/build/_downloads/pybullet-3.2.7.tar.gz"
-extra=()
-if [[ ${BUILD_DIR:-build} != build && -f $archive ]]; then
-	extra=(-DBULLET_ARCHIVE="$archive")
-fi
-cmake -S . -B "${BUILD_DIR:-build}" -G Ninja -DBP_UNITY_BUILD=ON "${extra[@]}" "$@"
+cmake --preset main "$@"

@@ -1,6 +1,10 @@
 #!/usr/bin/env bash
 # Installs what the build and tests need on Debian bookworm (run as root), skipping what is there.
+# Once per CI run: a script that ran it exports BP_DEPS_CHECKED=1, and the scripts it calls skip it then.
 set -euo pipefail
+if [[ ${BP_DEPS_CHECKED:-0} == 1 ]]; then
+	exit 0
+fi
 packages=(cmake ninja-build pkg-config quilt g++ python3 python3-pip python3-venv libgtest-dev libbenchmark-dev clang-format
 	libosmesa6-dev libgl-dev mesa-common-dev)
 missing=()

@@ -16,9 +16,11 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/deps.sh
-bash ci/configure.sh -DBP_BUILD_TESTS=OFF -DBP_BUILD_BROWSER=ON
-build="${BUILD_DIR:-build}"
-cmake --build "$build" --target charpy plasticity_browser charpy_figures wrecking_ball
+# preset main (CMakePresets.json): build/, no tests; its build preset builds the console runners (charpy, structures,
+# wrecking_ball), plasticity_browser and charpy_figures
+cmake --preset main
+cmake --build --preset main
+build=build
 out="$build/charpy-report"
 rm -rf "$out"
 mkdir -p "$out/browser"

@@ -4,7 +4,7 @@ peer, measured beside the project's solvers (btDirectJointSolver, sequential imp
 report/STRUCTURES-MUJOCO.md and report/structures-mujoco.csv.
 
   bash ci/peer_env.sh python3 ci/mujoco_structures.py [--runner=build/bin/structures]
-        [--bench=build/bin/game_settings_benchmarks] [--csv=report/structures-mujoco.csv]
+        [--bench=build-bench/bin/game_settings_benchmarks] [--csv=report/structures-mujoco.csv]
         [--md=report/STRUCTURES-MUJOCO.md] [--quick]
 
 The model (the project's numbers, not guessed: demos/structures/Cantilever.h CantileverParameters, the segments
@@ -703,7 +703,7 @@ MuJoCo: each `mj_step` timed on its own (time.perf_counter_ns around the Python 
 included) over 2000 steps, one run: median (mean) in us; then the next 2000 steps in one `mj_step(model, data,
 nstep=2000)` call (no Python per step): **batched** mean. †: MuJoCo reset a diverged state during the timed steps
 (the figure is for stepping whatever state it reset to). The project:
-`build/bin/game_settings_benchmarks` run in the same session (Google Benchmark, the same cantilever of plastic hinges at
+`build-bench/bin/game_settings_benchmarks` run in the same session (Google Benchmark, the same cantilever of plastic hinges at
 0.9 Mp/L, 1/240 s: median of 3 repetitions of the mean step, wall time), and the ratio MuJoCo mean / project wall.
 {machine}; a shared machine (1-minute load average {rows[0].get('load_average', '?')} at the start / end of the sweep, on
 {os.cpu_count()} CPUs): compare within this table.
@@ -842,11 +842,11 @@ def write_whole(path, text):
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--runner", help="build/bin/structures: the project's cantilever and portal with each solver, same session")
-    ap.add_argument("--bench", help="build/bin/game_settings_benchmarks: the project's cost per step, same session")
+    ap.add_argument("--bench", help="build-bench/bin/game_settings_benchmarks (preset bench): the project's cost per step, same session")
     ap.add_argument("--csv", default="report/structures-mujoco.csv")
     ap.add_argument("--md", default="report/STRUCTURES-MUJOCO.md")
     ap.add_argument("--command", default="bash ci/peer_env.sh python3 ci/mujoco_structures.py --runner=build/bin/structures "
-                    "--bench=build/bin/game_settings_benchmarks")
+                    "--bench=build-bench/bin/game_settings_benchmarks")
     ap.add_argument("--quick", action="store_true", help="one setting (stiff, Newton, 100), 4 segments, no portal (tests)")
     ap.add_argument("--from-csv", metavar="CSV", help="no runs: the report from a CSV this script wrote")
     ap.add_argument("--print-xml", choices=["cantilever", "portal"], help="print the model (4 segments) and stop")

@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 MUJOCO_VERSION=4.0.0  # pinned; ci/mujoco_charpy.py MUJOCO_VERSION says the same
-venv="${PEER_VENV:-${BUILD_DIR:-build}/peer-venv}"
+venv="${PEER_VENV:-build/peer-venv}"
 python="$venv/bin/python"
 have() { [ -x "$python" ] && "$python" -c "import mujoco, sys; sys.exit(mujoco.__version__ != '$MUJOCO_VERSION')" 2>/dev/null; }
 if ! have; then
