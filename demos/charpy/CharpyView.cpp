@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <sstream>
 
 #include "btBulletDynamicsCommon.h"
 #include "CommonInterfaces/CommonGUIHelperInterface.h"
 #include "CommonInterfaces/CommonGraphicsAppInterface.h"
 
 #include "CharpyScene.h"
+#include "TextLines.h"
 
 const float kCharpySpecimenRgb[3] = {0.95f, 0.45f, 0.05f};
 const float kCharpyAnvilRgb[3] = {0.55f, 0.55f, 0.58f};
@@ -75,12 +75,5 @@ std::string charpyEnergyPanel(const CharpyScene& scene)
 
 void drawCharpyPanel(CommonGraphicsApp* app, const std::string& text, int left_px, int top_px)
 {
-	std::istringstream lines(text);
-	std::string line;
-	int y = top_px;
-	while (std::getline(lines, line))
-	{
-		app->drawText(line.c_str(), left_px, y, 0.4f);
-		y += 17;
-	}
+	drawTextLines(app, text, left_px, top_px);
 }

@@ -118,18 +118,6 @@ ScreenRect textRect(const std::string& text, int left_px, int top_px)
 	return textRect(n, int(longest), left_px, top_px);
 }
 
-void drawTextLines(CommonGraphicsApp* app, const std::string& text, int left_px, int top_px)
-{
-	std::istringstream lines(text);
-	std::string line;
-	int y = top_px;
-	while (std::getline(lines, line))
-	{
-		app->drawText(line.c_str(), left_px, y, 0.4f);
-		y += kTextLine_px;
-	}
-}
-
 SceneFraming frameScene(const FramingRequest& request, int width_px, int height_px, bool gui_shown)
 {
 	SceneFraming f;

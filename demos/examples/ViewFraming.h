@@ -7,6 +7,7 @@
 #include <string>
 
 #include "SteppedScene.h"
+#include "TextLines.h"
 
 struct CommonCameraInterface;
 struct CommonGraphicsApp;
@@ -41,14 +42,10 @@ ScreenRect guiFreeRect(int width_px, int height_px, bool gui_shown);
 // the rectangle lines x characters cover; a line's ink (accents to descenders) lies within kTextLineHeight_px of the y
 // drawText takes. kTextChar_px bounds the font's widest advance at that size. tests/render/FramingRenderTest.cpp checks
 // that the drawn text stays inside.
-constexpr int kTextLine_px = 17;
 constexpr int kTextLineHeight_px = 24;
 constexpr int kTextChar_px = 10;
 ScreenRect textRect(int lines, int characters, int left_px, int top_px);
 ScreenRect textRect(const std::string& text, int left_px, int top_px);  // its lines and longest line
-
-// Draws text lines from (left_px, top_px), kTextLine_px apart.
-void drawTextLines(CommonGraphicsApp* app, const std::string& text, int left_px, int top_px);
 
 struct ViewCamera
 {
