@@ -1,5 +1,6 @@
 #include "JointFactory.h"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace plastic
@@ -11,6 +12,15 @@ btTransform frameIn(const btRigidBody& body, const JointSpec& spec)
 {
 	const btTransform world(spec.basis, spec.pivot_m);
 	return body.getCenterOfMassTransform().inverse() * world;
+}
+
+// the plastic settings of a joint (makeJoint checked each field first)
+btPlasticConstraintSettings plasticSettings(const JointSpec& spec)
+{
+	btPlasticConstraintSettings settings;
+	settings.m_maxPlasticRotation = btScalar(spec.max_plastic_rotation_rad);
+	settings.m_minStepsPerPeriod = btScalar(spec.min_steps_per_period);
+	return settings;
 }
 
 // 6DOF frame: X = bending axis 1, Y = bending axis 2, Z = member axis; linear DOFs 0-2 along them
@@ -26,8 +36,7 @@ void configureElasticPlastic(Constraint& c, const JointSpec& spec, Stiffness set
 		setStiffness(c, i, stiff[i]);
 		c.setMaxForce(i, btScalar(maxForce[i]));
 	}
-	c.setMaxPlasticRotation(btScalar(spec.max_plastic_rotation_rad));
-	c.setMinStepsPerPeriod(btScalar(spec.min_steps_per_period));
+	c.setPlasticSettings(plasticSettings(spec));
 	c.resetPlasticState();
 }
 
@@ -92,7 +101,7 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 	{
 		throw std::invalid_argument("max plastic rotation: " + std::to_string(spec.max_plastic_rotation_rad) + " is not in (0, inf) rad");
 	}
-	if (!(spec.min_steps_per_period >= 1))
+	if (!(spec.min_steps_per_period >= 1 && std::isfinite(spec.min_steps_per_period)))
 	{
 		throw std::invalid_argument("min_steps_per_period: " + std::to_string(spec.min_steps_per_period) + " is not in [1, inf) steps per period");
 	}
@@ -155,7 +164,7 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 		{
 			auto h = std::make_unique<btPlasticHingeConstraint>(a, b, frameIn(a, hingeSpec), frameIn(b, hingeSpec));
 			h->setPlasticMoment(btScalar(cap.plastic_moment_y_nm));
-			h->setMaxPlasticRotation(btScalar(spec.max_plastic_rotation_rad));
+			h->setPlasticSettings(plasticSettings(spec));
 			configureJoint(*h, spec.solver, true);  // its rows hold position errors alone
 			const btPlasticConstraintState* state = &h->getPlasticState();
 			return Joint{std::move(h), state, spec.method};

@@ -114,6 +114,21 @@ TEST(ToolkitCantilever, BadSpecificationsAreRefusedByName)
 	{
 		EXPECT_NE(std::string(e.what()).find("bending axis"), std::string::npos);
 	}
+	spec.bending_axis = btVector3(0, 0, 1);
+	spec.joint.method = JointMethod::ElasticPlastic2;
+	for (double steps : {0.5, double(INFINITY), double(NAN)})
+	{
+		spec.joint.min_steps_per_period = steps;
+		try
+		{
+			Beam beam(rig.world, spec, &rig.support);
+			FAIL() << "min_steps_per_period " << steps << " was accepted";
+		}
+		catch (const std::invalid_argument& e)
+		{
+			EXPECT_NE(std::string(e.what()).find("min_steps_per_period"), std::string::npos) << e.what();
+		}
+	}
 }
 
 // A beam of every joint method (issue 22): the beam passes its JointSpec whole to each joint, so a brittle beam gets

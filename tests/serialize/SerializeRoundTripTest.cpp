@@ -450,6 +450,38 @@ TEST(SerializeFormat, UncappedHingeWritesTheUpstreamStructure)
 	serializer.finishSerialization();
 }
 
+// The settings come back whole through btPlasticConstraintSettings::isValid: a hinge's structure with a yield
+// tolerance out of [0, 1) (a damaged file) restores the hinge's cap and booking but keeps its settings, and the same
+// structure undamaged restores them too.
+TEST(SerializeFormat, SettingsOutOfTheirRangeAreNotRestored)
+{
+	World w;
+	btRigidBody* body = w.addBox(btVector3(1, 1, 1), 1, btVector3(0, 0, 0));
+	btPlasticHingeConstraint saved(*body, btVector3(0, 0, 0), btVector3(0, 0, 1));
+	saved.setPlasticMoment(btScalar(3));
+	saved.setMaxPlasticRotation(btScalar(0.7));
+	saved.setYieldTolerance(btScalar(0.004));
+	btDefaultSerializer serializer;
+	std::vector<char> buffer(saved.calculateSerializeBufferSize());
+	serializer.startSerialization();
+	ASSERT_STREQ(btPlasticHingeConstraintDataName, saved.serialize(buffer.data(), &serializer));
+	serializer.finishSerialization();
+	btPlasticHingeConstraintData& data = *reinterpret_cast<btPlasticHingeConstraintData*>(buffer.data());
+	for (bool damaged : {true, false})
+	{
+		data.m_plasticState.m_yieldTolerance = damaged ? 2 : btScalar(0.004);
+		btPlasticHingeConstraint loaded(*body, btVector3(0, 0, 0), btVector3(0, 0, 1));
+#ifdef BT_USE_DOUBLE_PRECISION
+		loaded.deSerializeDouble(data);
+#else
+		loaded.deSerializeFloat(data);
+#endif
+		EXPECT_EQ(btScalar(3), loaded.getPlasticMoment()) << damaged;
+		EXPECT_EQ(damaged ? SIMD_INFINITY : btScalar(0.7), loaded.getMaxPlasticRotation()) << damaged;
+		EXPECT_EQ(damaged ? btPlasticConstraintSettings().m_yieldTolerance : btScalar(0.004), loaded.getYieldTolerance()) << damaged;
+	}
+}
+
 // tests/serialize/data/upstream-326.bullet was written by unpatched Bullet (make_old_file.cpp, pybullet 3.2.7 src/,
 // single precision, 64-bit): it has no plastic structures in its DNA and loads with every value make_old_file set
 // (compared as the floats the file holds, so that a double-precision build checks the same).
