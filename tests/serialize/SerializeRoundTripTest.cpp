@@ -83,7 +83,10 @@ struct World
 // at 0 with a locked-moment cap below its weight's moment, so it slips. F hangs on a static base by an
 // elastic-plastic Spring2 constraint whose Z rotation is an elastic spring that yields; G on the world by one whose Z
 // rotation is rigid-plastic; H on a static base by a plain Spring2 constraint whose locked Z rotation has a row cap;
-// I and J like F and G, by elastic-plastic 6DOF spring constraints.
+// I and J like F and G, by elastic-plastic 6DOF spring constraints. K hangs on the world by an elastic-plastic
+// Spring2 constraint whose frame is turned 45 degrees about the beam, so that its weight's moment bends it about both
+// of the frame's bending axes (Y and Z) by 0.71 of the moment each: each cap (8 N m) alone would hold that, the
+// circle they yield on together does not (9.8 N m > 8 N m).
 void buildScene(World& w)
 {
 	const btVector3 beam(btScalar(0.5), btScalar(0.0625), btScalar(0.0625));
@@ -157,6 +160,16 @@ void buildScene(World& w)
 	ei->setMaxPlasticRotation(btScalar(1.2));
 	ej->setMaxForce(5, 6);
 	ej->setSplitPositionCorrection(true);
+
+	btRigidBody* k = w.addBox(beam, 2, btVector3(btScalar(0.5), 0, 24));
+	btTransform turned(btQuaternion(btVector3(1, 0, 0), SIMD_PI / 4), btVector3(btScalar(-0.5), 0, 0));
+	bt6DofElasticPlastic2Constraint* ek = w.add(new bt6DofElasticPlastic2Constraint(*k, turned));
+	for (int i = 0; i < 6; i++)
+	{
+		ek->setStiffness(i, 0, false);  // rigid-plastic
+		ek->setMaxForce(i, btScalar(i == 4 || i == 5 ? 8 : 1e6));
+	}
+	ek->setYieldSurface(bt6DofElasticPlastic2Constraint::YIELD_CIRCLE, 4, 5);
 }
 
 // Everything the continuation depends on or books, as raw numbers: every body's pose, velocities, mass and
@@ -220,7 +233,8 @@ std::vector<btScalar> snapshot(btDiscreteDynamicsWorld& world)
 		{
 			const btPlasticConstraintState& p = ep2->getPlasticState();
 			s.insert(s.end(), {p.getCurrentPlasticRotation(), p.getCurrentPlasticDisplacement(), p.getAbsorbedEnergy(), p.getElasticEnergy(),
-							   p.getMaxPlasticRotation(), p.getMaxPlasticDisplacement(), p.getYieldTolerance(), p.getMinStepsPerPeriod()});
+							   p.getMaxPlasticRotation(), p.getMaxPlasticDisplacement(), p.getYieldTolerance(), p.getMinStepsPerPeriod(),
+							   btScalar(ep2->getYieldSurface()), btScalar(ep2->getYieldSurfaceDof(0)), btScalar(ep2->getYieldSurfaceDof(1))});
 		}
 		if (btPlasticHingeConstraint* plastic = dynamic_cast<btPlasticHingeConstraint*>(c))
 		{
@@ -251,7 +265,10 @@ std::vector<char> save(btDiscreteDynamicsWorld& world)
 }
 
 // Loads a saved world into w. btBulletWorldImporter does not restore body velocities and damping (upstream, for every
-// file): they are set here from the file's own btRigidBodyData, in the order the importer made the bodies.
+// file): they are set here from the file's own btRigidBodyData, in the order the importer made the bodies. Nor does it
+// turn a body's world inertia to the orientation it sets (createRigidBody calls setWorldTransform after the
+// constructor, so the first step uses the inertia of the identity orientation): updateInertiaTensor here. Bodies that
+// turn about a principal axis with equal inertias across it (B to J) do not see it; K, bent about two axes, does.
 void load(std::vector<char> buffer, World& w, bool restoreVelocities = true)
 {
 	bParse::btBulletFile file(buffer.data(), int(buffer.size()));
@@ -279,6 +296,7 @@ void load(std::vector<char> buffer, World& w, bool restoreVelocities = true)
 		}
 		body->setLinearVelocity(linear);
 		body->setAngularVelocity(angular);
+		body->updateInertiaTensor();
 	}
 }
 
@@ -303,7 +321,7 @@ TEST_F(SerializeRoundTrip, PlasticHingeAndCapSurviveSaveAndLoad)
 
 	World loaded;
 	load(save(original.world), loaded);
-	ASSERT_EQ(9, loaded.world.getNumConstraints());
+	ASSERT_EQ(10, loaded.world.getNumConstraints());
 	for (int i = 0; i < 3; i++)
 	{
 		btTypedConstraint* c = loaded.world.getConstraint(i);
@@ -366,6 +384,14 @@ TEST_F(SerializeRoundTrip, PlasticHingeAndCapSurviveSaveAndLoad)
 		EXPECT_EQ(was->getSplitPositionCorrection(), ep->getSplitPositionCorrection());
 	}
 	EXPECT_GT(dynamic_cast<bt6DofElasticPlasticConstraint*>(original.world.getConstraint(7))->getAbsorbedEnergy(), btScalar(0)) << "I must be mid-yield";
+
+	// K comes back with its yield surface (patch 0023; before, a loaded constraint had none and each DOF held alone)
+	bt6DofElasticPlastic2Constraint* ek = dynamic_cast<bt6DofElasticPlastic2Constraint*>(loaded.world.getConstraint(9));
+	ASSERT_NE(nullptr, ek);
+	EXPECT_EQ(bt6DofElasticPlastic2Constraint::YIELD_CIRCLE, ek->getYieldSurface());
+	EXPECT_EQ(4, ek->getYieldSurfaceDof(0));
+	EXPECT_EQ(5, ek->getYieldSurfaceDof(1));
+	EXPECT_GT(dynamic_cast<bt6DofElasticPlastic2Constraint*>(original.world.getConstraint(9))->getAbsorbedEnergy(), btScalar(0)) << "K must be mid-yield";
 }
 
 // Save mid-yield, load into a fresh world, continue: every step of the loaded world is bit-identical to the world that
@@ -410,6 +436,10 @@ TEST_F(SerializeRoundTrip, LoadedWorldContinuesBitIdentical)
 	ASSERT_GT(hd->getAbsorbedEnergy(), btScalar(0)) << "D must yield";
 	ASSERT_FALSE(original.world.getConstraint(4)->isEnabled()) << "F must break after the save";
 	ASSERT_FALSE(original.world.getConstraint(7)->isEnabled()) << "I must break after the save";
+	const bt6DofElasticPlastic2Constraint* ek = dynamic_cast<bt6DofElasticPlastic2Constraint*>(original.world.getConstraint(9));
+	std::printf("elastic-plastic2 on a circle 9: %.4f rad, %.4f J plastic, enabled %d\n", double(ek->getCurrentPlasticRotation()),
+				double(ek->getAbsorbedEnergy()), int(ek->isEnabled()));
+	ASSERT_GT(ek->getCurrentPlasticRotation(), btScalar(0.1)) << "K must go on yielding on its surface after the save";
 
 	World loaded;
 	load(file, loaded);
@@ -479,6 +509,54 @@ TEST(SerializeFormat, SettingsOutOfTheirRangeAreNotRestored)
 		EXPECT_EQ(btScalar(3), loaded.getPlasticMoment()) << damaged;
 		EXPECT_EQ(damaged ? SIMD_INFINITY : btScalar(0.7), loaded.getMaxPlasticRotation()) << damaged;
 		EXPECT_EQ(damaged ? btPlasticConstraintSettings().m_yieldTolerance : btScalar(0.004), loaded.getYieldTolerance()) << damaged;
+	}
+}
+
+// The yield surface comes back only as setYieldSurface would take it (patch 0023): a structure naming a surface that
+// does not exist, or the same DOF twice (a damaged file), loads without a surface, as a file written before the
+// surface was serialized does (its fields read as 0, YIELD_BOX); the undamaged structure restores it.
+TEST(SerializeFormat, AYieldSurfaceOutOfItsRangeIsNotRestored)
+{
+	World w;
+	btRigidBody* body = w.addBox(btVector3(1, 1, 1), 1, btVector3(0, 0, 0));
+	bt6DofElasticPlastic2Constraint saved(*body, btTransform::getIdentity());
+	saved.setMaxForce(4, 8);
+	saved.setMaxForce(5, 8);
+	saved.setYieldSurface(bt6DofElasticPlastic2Constraint::YIELD_RECTANGLE_BIAXIAL, 5, 4);
+	btDefaultSerializer serializer;
+	std::vector<char> buffer(saved.calculateSerializeBufferSize());
+	serializer.startSerialization();
+	ASSERT_STREQ(bt6DofElasticPlastic2ConstraintDataName, saved.serialize(buffer.data(), &serializer));
+	serializer.finishSerialization();
+	bt6DofElasticPlastic2ConstraintData& data = *reinterpret_cast<bt6DofElasticPlastic2ConstraintData*>(buffer.data());
+	struct Case
+	{
+		int surface, dof0, dof1;
+		bool restored;
+	};
+	const Case cases[] = {{bt6DofElasticPlastic2Constraint::YIELD_RECTANGLE_BIAXIAL, 5, 4, true},
+						  {bt6DofElasticPlastic2Constraint::YIELD_SURFACE_COUNT, 5, 4, false},
+						  {-1, 5, 4, false},
+						  {bt6DofElasticPlastic2Constraint::YIELD_CIRCLE, 4, 4, false},
+						  {bt6DofElasticPlastic2Constraint::YIELD_CIRCLE, 4, 6, false},
+						  {0, 0, 0, false}};
+	for (const Case& c : cases)
+	{
+		data.m_yieldSurface = c.surface;
+		data.m_surfaceDof[0] = c.dof0;
+		data.m_surfaceDof[1] = c.dof1;
+		bt6DofElasticPlastic2Constraint loaded(*body, btTransform::getIdentity());
+#ifdef BT_USE_DOUBLE_PRECISION
+		loaded.deSerializeDouble(data);
+#else
+		loaded.deSerializeFloat(data);
+#endif
+		const std::string what = std::to_string(c.surface) + " on " + std::to_string(c.dof0) + ", " + std::to_string(c.dof1);
+		EXPECT_EQ(btScalar(8), loaded.getMaxForce(4)) << what;
+		EXPECT_EQ(c.restored ? bt6DofElasticPlastic2Constraint::YIELD_RECTANGLE_BIAXIAL : bt6DofElasticPlastic2Constraint::YIELD_BOX, loaded.getYieldSurface())
+			<< what;
+		EXPECT_EQ(c.restored ? 5 : -1, loaded.getYieldSurfaceDof(0)) << what;
+		EXPECT_EQ(c.restored ? 4 : -1, loaded.getYieldSurfaceDof(1)) << what;
 	}
 }
 
