@@ -1,6 +1,6 @@
 #include "CharpyCommandLine.h"
 
-#include "FlagArgument.h"
+#include "scene/FlagArgument.h"
 
 #include <cerrno>
 #include <cstdlib>
@@ -9,8 +9,8 @@
 
 namespace
 {
-using plastic::parseInteger;
-using plastic::parseNumber;
+using scene::parseInteger;
+using scene::parseNumber;
 
 using Setter = std::function<bool(CharpyParameters&, const std::string&)>;
 
@@ -84,7 +84,7 @@ CharpyCommandLine parseCharpyCommandLine(const std::vector<std::string>& argumen
 	}
 	for (const std::string& argument : arguments)
 	{
-		const std::optional<plastic::FlagArgument> flag = plastic::splitFlagArgument(argument, cl.errors);
+		const std::optional<scene::FlagArgument> flag = scene::splitFlagArgument(argument, cl.errors);
 		if (!flag)
 		{
 			continue;

@@ -4,12 +4,13 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "JointFactory.h"
-#include "Section.h"
-#include "SubstepPolicy.h"
+#include "plastic/JointFactory.h"
+#include "plastic/Section.h"
+#include "plastic/SubstepPolicy.h"
 #include "btBulletDynamicsCommon.h"
 #include "BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h"
 #include "BulletDynamics/ConstraintSolver/btGeneric6DofSpring2Constraint.h"
+#include "scene/Errors.h"
 
 namespace
 {
@@ -102,6 +103,7 @@ CharpyScene::CharpyScene(const CharpyParameters& parameters)
 		throw std::invalid_argument(text);
 	}
 	m_substeps = plastic::ContactSubstepPolicy(plastic::ContactSubstepSettings{parameters.contact_substep_s});
+	scene::throwIfAny(m_substeps.errors());
 	m_section = computeCharpySection(parameters);
 	m_impl = std::make_unique<Impl>();
 	try
@@ -286,7 +288,7 @@ void CharpyScene::createJoints()
 		spec.max_plastic_rotation_rad = p.max_plastic_rotation_rad;
 		spec.min_steps_per_period = p.min_steps_per_period;
 		spec.breaking_force_n = p.brittle_breaking_force_n;
-		m_impl->joints.push_back(plastic::makeJoint(spec, *m_parts[i], *m_parts[i + 1]));
+		m_impl->joints.push_back(plastic::makeJoint(scene::requireValid(spec), *m_parts[i], *m_parts[i + 1]));
 		m_impl->specs.push_back(spec);
 		btTypedConstraint* joint = m_impl->joints.back().constraint.get();
 		m_world->addConstraint(joint, true);

@@ -8,7 +8,7 @@
 
 #include "CharpyParameters.h"
 #include "CharpySection.h"
-#include "SubstepPolicy.h"
+#include "plastic/SubstepPolicy.h"
 
 class btCollisionShape;
 class btDiscreteDynamicsWorld;

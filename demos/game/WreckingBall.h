@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "JointFactory.h"
-#include "SolverSettings.h"
+#include "plastic/JointFactory.h"
+#include "plastic/SolverSettings.h"
 #include "SteppedScene.h"
 
 namespace game

@@ -1,6 +1,6 @@
 #include "WreckingBallCommandLine.h"
 
-#include "FlagArgument.h"
+#include "scene/FlagArgument.h"
 
 #include <cerrno>
 #include <cstdlib>
@@ -11,8 +11,8 @@ namespace game
 {
 namespace
 {
-using plastic::parseInteger;
-using plastic::parseNumber;
+using scene::parseInteger;
+using scene::parseNumber;
 
 struct Flag
 {
@@ -94,7 +94,7 @@ WreckingBallCommandLine parseWreckingBallCommandLine(const std::vector<std::stri
 	WreckingBallCommandLine cl;
 	for (const std::string& argument : arguments)
 	{
-		const std::optional<plastic::FlagArgument> flag = plastic::splitFlagArgument(argument, cl.errors);
+		const std::optional<scene::FlagArgument> flag = scene::splitFlagArgument(argument, cl.errors);
 		if (!flag)
 		{
 			continue;

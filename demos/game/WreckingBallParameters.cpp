@@ -1,6 +1,6 @@
 #include <cmath>
 
-#include "Section.h"
+#include "plastic/Section.h"
 #include "StructureRig.h"
 #include "WreckingBall.h"
 

@@ -8,13 +8,14 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "BeamBuilder.h"
-#include "EnergyLedger.h"
+#include "plastic/BeamBuilder.h"
+#include "plastic/EnergyLedger.h"
 #include "JointSites.h"
 #include "Measures.h"
 #include "Pendulum.h"
 #include "StructureRig.h"
 #include "WreckingBall.h"
+#include "scene/Errors.h"
 
 namespace game
 {
@@ -177,7 +178,7 @@ WreckingBallScene::WreckingBallScene(const WreckingBallParameters& p)
 		for (int c = 0; c < lines; c++)
 		{
 			btRigidBody* support = k == 0 ? s.ground.get() : s.columns[size_t(c)][size_t(k - 1)]->segments().back();
-			s.columns[size_t(c)].push_back(std::make_unique<plastic::Beam>(world, s.memberSpec(btVector3(L * btScalar(c), h * btScalar(k), 0), btVector3(L * btScalar(c), h * btScalar(k + 1), 0), p.column_segments), support));
+			s.columns[size_t(c)].push_back(std::make_unique<plastic::Beam>(world, scene::requireValid(s.memberSpec(btVector3(L * btScalar(c), h * btScalar(k), 0), btVector3(L * btScalar(c), h * btScalar(k + 1), 0), p.column_segments)), support));
 			addMember(*s.columns[size_t(c)].back(), k == 0 ? nullptr : support, "column-" + std::to_string(c) + "-" + std::to_string(k + 1));
 		}
 		for (int b = 0; b < p.bays; b++)
@@ -185,14 +186,14 @@ WreckingBallScene::WreckingBallScene(const WreckingBallParameters& p)
 			btRigidBody* left = s.columns[size_t(b)][size_t(k)]->segments().back();
 			btRigidBody* right = s.columns[size_t(b + 1)][size_t(k)]->segments().back();
 			const btVector3 end(L * btScalar(b + 1), h * btScalar(k + 1), 0);
-			s.beams[size_t(k)].push_back(std::make_unique<plastic::Beam>(world, s.memberSpec(btVector3(L * btScalar(b), h * btScalar(k + 1), 0), end, p.beam_segments), left));
+			s.beams[size_t(k)].push_back(std::make_unique<plastic::Beam>(world, scene::requireValid(s.memberSpec(btVector3(L * btScalar(b), h * btScalar(k + 1), 0), end, p.beam_segments)), left));
 			const plastic::Beam& beam = *s.beams[size_t(k)].back();
 			const std::string prefix = "beam-" + std::to_string(k + 1) + "-" + std::to_string(b + 1);
 			addMember(beam, left, prefix);
 			plastic::JointSpec spec = beam.jointSpecs().back();
 			spec.pivot_m = end;
 			s.endSpecs.push_back(spec);
-			s.endJoints.push_back(plastic::makeJoint(spec, *beam.segments().back(), *right));
+			s.endJoints.push_back(plastic::makeJoint(scene::requireValid(spec), *beam.segments().back(), *right));
 			world.addConstraint(s.endJoints.back().constraint.get(), true);
 			frame.push_back({&s.endJoints.back(), beam.segments().back(), right, end, prefix + "-end"});
 		}

@@ -6,13 +6,14 @@
 #include <stdexcept>
 #include <vector>
 
-#include "BeamBuilder.h"
+#include "plastic/BeamBuilder.h"
 #include "BulletDynamics/Featherstone/btMultiBody.h"
 #include "BulletDynamics/Featherstone/btMultiBodyConstraintSolver.h"
 #include "BulletDynamics/Featherstone/btMultiBodyDynamicsWorld.h"
 #include "BulletDynamics/Featherstone/btMultiBodyJointMotor.h"
 #include "BulletDynamics/Featherstone/btMultiBodyLinkCollider.h"
-#include "EnergyLedger.h"
+#include "plastic/EnergyLedger.h"
+#include "scene/Errors.h"
 
 namespace plastic
 {
@@ -91,7 +92,8 @@ ProbeRun runRigid(const ProbeCase& c, JointMethod method, const ProbeSetting& se
 		spec.bending_axis = btVector3(0, 0, 1);
 		spec.joint.method = method;
 		spec.joint.solver = setting.joint;
-		beams.push_back(std::make_unique<Beam>(world, spec, previous));
+		beams.push_back(std::make_unique<Beam>(world, scene::requireValid(spec), previous));
+		for (const Joint& j : beams.back()->joints()) j.constraint->setWarmStartingFactor(btScalar(setting.warm_starting_factor));
 		for (btRigidBody* b : beams.back()->segments()) chain.push_back(b);
 		previous = chain.back();
 	}

@@ -7,8 +7,8 @@
 
 #include <string>
 
-#include "JointFactory.h"
-#include "SolverSettings.h"
+#include "plastic/JointFactory.h"
+#include "plastic/SolverSettings.h"
 
 namespace plastic
 {
@@ -33,6 +33,9 @@ struct ProbeSetting
 	bool multibody = false;
 	WorldSolverSettings world;
 	JointSolverSettings joint;
+	// every joint's rows start each step at this factor times their previous impulses (patch 0020, not for upstream:
+	// btTypedConstraint::setWarmStartingFactor); 0 = off, as upstream
+	double warm_starting_factor = 0.0;
 };
 
 struct ProbeRun

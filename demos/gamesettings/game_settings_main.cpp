@@ -62,21 +62,23 @@ std::vector<ProbeSetting> settings(bool quick)
 		});
 		with("btMLCPSolver + Dantzig + joint warm start 1.0", [](ProbeSetting& s) {
 			s.world.solver = SolverKind::MlcpDantzig;
-			s.joint.warm_starting_factor = 1.0;
+			s.warm_starting_factor = 1.0;
 		});
-		with("joint warm start 0.85 (0020)", [](ProbeSetting& s) { s.joint.warm_starting_factor = 0.85; });
+		with("joint warm start 0.85 (0020)", [](ProbeSetting& s)
+			 { s.warm_starting_factor = 0.85; });
 	}
-	with("joint warm start 1.0 (0020)", [](ProbeSetting& s) { s.joint.warm_starting_factor = 1.0; });
+	with("joint warm start 1.0 (0020)", [](ProbeSetting& s)
+		 { s.warm_starting_factor = 1.0; });
 	if (!quick)
 	{
-		with("warm start 1.0 + split correction", [](ProbeSetting& s) {
-			s.joint.warm_starting_factor = 1.0;
-			s.joint.split_position_correction = true;
-		});
-		with("warm start 1.0 + joint iterations 20", [](ProbeSetting& s) {
-			s.joint.warm_starting_factor = 1.0;
-			s.joint.override_iterations = 20;
-		});
+		with("warm start 1.0 + split correction", [](ProbeSetting& s)
+			 {
+			s.warm_starting_factor = 1.0;
+			s.joint.split_position_correction = true; });
+		with("warm start 1.0 + joint iterations 20", [](ProbeSetting& s)
+			 {
+			s.warm_starting_factor = 1.0;
+			s.joint.override_iterations = 20; });
 	}
 	return out;
 }

@@ -1,28 +1,53 @@
 #include "BeamBuilder.h"
 
-#include <stdexcept>
 #include <string>
 
 namespace plastic
 {
-Beam::Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* support) : m_world(world)
+namespace
 {
+// the member's axis and its main bending axis across it; false when there is none
+bool memberAxes(const BeamSpec& spec, btVector3& axis, btVector3& bending)
+{
+	const btVector3 member = spec.end_m - spec.start_m;
+	if (!(member.length() > 0)) return false;
+	axis = member / member.length();
+	bending = spec.bending_axis - axis * spec.bending_axis.dot(axis);
+	return bending.length() > 1e-6;
+}
+}  // namespace
+
+std::vector<std::string> validate(const BeamSpec& spec)
+{
+	std::vector<std::string> errors;
 	if (spec.segments < 1 || spec.segments > 10000)
 	{
-		throw std::invalid_argument("segments: " + std::to_string(spec.segments) + " is not in [1, 10000]");
+		errors.push_back("segments: " + std::to_string(spec.segments) + " is not in [1, 10000]");
 	}
-	const btVector3 member = spec.end_m - spec.start_m;
-	const double length_m = member.length();
-	if (!(length_m > 0))
+	btVector3 axis, bending;
+	if (!((spec.end_m - spec.start_m).length() > 0))
 	{
-		throw std::invalid_argument("end: the member from start to end has no length");
+		errors.push_back("end: the member from start to end has no length");
 	}
-	const btVector3 axis = member / btScalar(length_m);
-	btVector3 bending = spec.bending_axis - axis * spec.bending_axis.dot(axis);
-	if (!(bending.length() > 1e-6))
+	else if (!memberAxes(spec, axis, bending))
 	{
-		throw std::invalid_argument("bending axis: it must not be parallel to the member");
+		errors.push_back("bending axis: it must not be parallel to the member");
 	}
+	// the joints' own fields; their segment length is the beam's, set by the beam
+	JointSpec joint = spec.joint;
+	if (errors.empty()) joint.segment_length_m = (spec.end_m - spec.start_m).length() / spec.segments;
+	for (const std::string& e : validate(joint)) errors.push_back(e);
+	return errors;
+}
+
+Beam::Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* support) : m_world(world), m_segmentLength_m(0), m_errors(validate(spec))
+{
+	btVector3 axis, bending;
+	if (!m_errors.empty() || !memberAxes(spec, axis, bending))
+	{
+		return;  // refused: no bodies, no joints
+	}
+	const double length_m = (spec.end_m - spec.start_m).length();
 	bending.normalize();
 	const btVector3 other = axis.cross(bending);
 	btMatrix3x3 basis;  // columns: bending axis 1, bending axis 2, member axis
@@ -50,16 +75,7 @@ Beam::Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* su
 			joint.pivot_m = spec.start_m + axis * btScalar(i * m_segmentLength_m);
 			joint.basis = basis;
 			joint.segment_length_m = m_segmentLength_m;
-			try
-			{
-				m_joints.push_back(makeJoint(joint, *previous, *body));
-			}
-			catch (...)
-			{
-				// a refused joint: the world must not keep the bodies and joints this beam is about to free
-				removeFromWorld();
-				throw;
-			}
+			m_joints.push_back(makeJoint(joint, *previous, *body));  // validate(spec) checked its fields
 			m_specs.push_back(joint);
 			m_world.addConstraint(m_joints.back().constraint.get(), true);
 		}

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "JointFactory.h"
@@ -22,10 +23,15 @@ struct BeamSpec
 	JointSpec joint;
 };
 
+// A message per field of the spec that is out of its range (its joint's fields included); empty when a Beam can be
+// built from it.
+std::vector<std::string> validate(const BeamSpec& spec);
+
 class Beam
 {
 public:
-	// support: a static body the start is fixed to (its joint is the first one), or nullptr for a free start
+	// support: a static body the start is fixed to (its joint is the first one), or nullptr for a free start. A spec
+	// that validate refuses builds nothing (no bodies, no joints): errors() says why.
 	Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* support);
 	~Beam();
 	Beam(const Beam&) = delete;
@@ -35,6 +41,7 @@ public:
 	const std::vector<Joint>& joints() const { return m_joints; }  // from the start to the end
 	const std::vector<JointSpec>& jointSpecs() const { return m_specs; }
 	double segmentLength_m() const { return m_segmentLength_m; }
+	const std::vector<std::string>& errors() const { return m_errors; }  // validate(spec): empty for a beam that was built
 	double plasticWork_j() const;
 	// call before each step: the hinge-motor stand-in's impulse follows the step
 	void updateForStep(double step_s);
@@ -49,5 +56,6 @@ private:
 	std::vector<btRigidBody*> m_segments;
 	std::vector<Joint> m_joints;
 	std::vector<JointSpec> m_specs;
+	std::vector<std::string> m_errors;
 };
 }  // namespace plastic

@@ -1,7 +1,7 @@
 #include "JointFactory.h"
 
 #include <cmath>
-#include <stdexcept>
+#include <sstream>
 
 namespace plastic
 {
@@ -91,32 +91,53 @@ static void setYieldSurface(bt6DofElasticPlastic2Constraint& c, const JointSpec&
 	}
 }
 
-Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
+std::vector<std::string> validate(const JointSpec& spec)
 {
-	if (!(spec.segment_length_m > 0))
+	std::vector<std::string> errors = validate(spec.section);
+	auto notIn = [&errors](const char* name, double value, const char* rangeAndUnit)
 	{
-		throw std::invalid_argument("segment length: " + std::to_string(spec.segment_length_m) + " is not in (0, inf) m");
+		std::ostringstream out;
+		out << name << ": " << value << " is not in " << rangeAndUnit;
+		errors.push_back(out.str());
+	};
+	if (!(spec.segment_length_m > 0 && std::isfinite(spec.segment_length_m)))
+	{
+		notIn("segment length", spec.segment_length_m, "(0, inf) m");
 	}
 	if (!(spec.max_plastic_rotation_rad > 0))
 	{
-		throw std::invalid_argument("max plastic rotation: " + std::to_string(spec.max_plastic_rotation_rad) + " is not in (0, inf) rad");
+		notIn("max plastic rotation", spec.max_plastic_rotation_rad, "(0, inf) rad");
 	}
 	if (!(spec.min_steps_per_period >= 1 && std::isfinite(spec.min_steps_per_period)))
 	{
-		throw std::invalid_argument("min_steps_per_period: " + std::to_string(spec.min_steps_per_period) + " is not in [1, inf) steps per period");
+		notIn("min_steps_per_period", spec.min_steps_per_period, "[1, inf) steps per period");
 	}
 	if (spec.method == JointMethod::Brittle && !(spec.breaking_force_n > 0))
 	{
-		throw std::invalid_argument("breaking force: " + std::to_string(spec.breaking_force_n) + " is not in (0, inf) N");
+		notIn("breaking force", spec.breaking_force_n, "(0, inf) N");
 	}
 	if (spec.yield_surface != YieldSurface::PerDof && spec.method != JointMethod::ElasticPlastic2)
 	{
-		throw std::invalid_argument("yield_surface: only an elastic-plastic2 joint has one (per-dof for " + std::string(jointMethodName(spec.method)) + ")");
+		errors.push_back("yield_surface: only an elastic-plastic2 joint has one (per-dof for " + std::string(jointMethodName(spec.method)) + ")");
 	}
 	if (spec.yield_surface == YieldSurface::Biaxial && spec.section.biaxial_interaction == BiaxialInteraction::None)
 	{
-		throw std::invalid_argument("yield_surface: biaxial needs a section whose interaction is known (rectangle, round bar, tube, I section), not a " +
-									spec.section.shape);
+		errors.push_back("yield_surface: biaxial needs a section whose interaction is known (rectangle, round bar, tube, I section), not a " +
+						 spec.section.shape);
+	}
+	if (std::string(jointMethodName(spec.method)) == "?")
+	{
+		errors.push_back("method: not one of brittle, spring, spring2, hinge-motor, plastic-hinge, elastic-plastic, elastic-plastic2");
+	}
+	for (const std::string& e : validate(spec.solver)) errors.push_back(e);
+	return errors;
+}
+
+Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
+{
+	if (!validate(spec).empty())
+	{
+		return Joint{};
 	}
 	// a hinge's axis is the frame's Z: turn the basis so that bending axis 1 becomes Z
 	btMatrix3x3 hingeBasis;
@@ -187,7 +208,7 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 			return Joint{std::move(c), state, spec.method};
 		}
 	}
-	throw std::invalid_argument("method: not one of brittle, spring, spring2, hinge-motor, plastic-hinge, elastic-plastic, elastic-plastic2");
+	return Joint{};  // not reached: validate names the method
 }
 
 void updateJointForStep(btTypedConstraint& joint, const JointSpec& spec, double step_s)

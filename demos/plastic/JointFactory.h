@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "Section.h"
 #include "SolverSettings.h"
@@ -64,8 +65,13 @@ struct Joint
 	double plasticRotation_rad() const { return plasticState ? plasticState->getCurrentPlasticRotation() : 0.0; }
 };
 
-// The joint between a and b (b may be a static body). The hinge-motor stand-in's impulse and the brittle joint's
-// breaking impulse follow the step: call updateJointForStep before each step; the other methods need nothing.
+// A message per field of the spec that is out of its range (naming the field and its range; the section's error and
+// the solver settings' included); empty when makeJoint can make the joint.
+std::vector<std::string> validate(const JointSpec& spec);
+
+// The joint between a and b (b may be a static body); a Joint without a constraint when validate(spec) is not empty.
+// The hinge-motor stand-in's impulse and the brittle joint's breaking impulse follow the step: call updateJointForStep
+// before each step; the other methods need nothing.
 Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b);
 void updateJointForStep(btTypedConstraint& joint, const JointSpec& spec, double step_s);
 }  // namespace plastic

@@ -2,20 +2,39 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
+#include <sstream>
 
 namespace plastic
 {
 namespace
 {
-void requirePositive(const char* name, double value)
+bool positive(double value) { return value > 0 && std::isfinite(value); }
+
+// "name: value is not in range m", as every refusal of a dimension reads
+std::string notIn(const char* name, double value, const std::string& range)
 {
-	if (!(value > 0) || !std::isfinite(value))
-	{
-		throw std::invalid_argument(std::string(name) + ": " + std::to_string(value) + " is not in (0, inf) m");
-	}
+	std::ostringstream out;
+	out << name << ": " << value << " is not in " << range << " m";
+	return out.str();
+}
+
+std::string notPositive(const char* name, double value) { return notIn(name, value, "(0, inf)"); }
+
+// a section a factory refused: every property 0, the reason in error
+SectionProperties refused(const char* shape, std::string error)
+{
+	SectionProperties s;
+	s.shape = shape;
+	s.error = std::move(error);
+	return s;
 }
 }  // namespace
+
+std::vector<std::string> validate(const SectionProperties& section)
+{
+	if (section.error.empty()) return {};
+	return {section.error};
+}
 
 double rectangleTorsionConstant_m4(double side1_m, double side2_m)
 {
@@ -27,8 +46,8 @@ double rectangleTorsionConstant_m4(double side1_m, double side2_m)
 
 SectionProperties rectangle(double width_m, double depth_m)
 {
-	requirePositive("width", width_m);
-	requirePositive("depth", depth_m);
+	if (!positive(width_m)) return refused("rectangle", notPositive("width", width_m));
+	if (!positive(depth_m)) return refused("rectangle", notPositive("depth", depth_m));
 	const double b = width_m, h = depth_m;
 	const double a = std::max(b, h), t = std::min(b, h);
 	SectionProperties s;
@@ -49,11 +68,12 @@ SectionProperties rectangle(double width_m, double depth_m)
 
 SectionProperties notchedRectangle(double width_m, double depth_m, double notch_depth_m)
 {
-	requirePositive("depth", depth_m);
+	if (!positive(depth_m)) return refused("notched rectangle", notPositive("depth", depth_m));
 	if (!(notch_depth_m >= 0) || !(notch_depth_m < depth_m))
 	{
-		throw std::invalid_argument("notch depth: " + std::to_string(notch_depth_m) + " is not in [0, depth = " +
-									std::to_string(depth_m) + ") m");
+		std::ostringstream range;
+		range << "[0, depth = " << depth_m << ")";
+		return refused("notched rectangle", notIn("notch depth", notch_depth_m, range.str()));
 	}
 	SectionProperties s = rectangle(width_m, depth_m - notch_depth_m);
 	s.shape = "notched rectangle";
@@ -62,7 +82,7 @@ SectionProperties notchedRectangle(double width_m, double depth_m, double notch_
 
 SectionProperties roundBar(double diameter_m)
 {
-	requirePositive("diameter", diameter_m);
+	if (!positive(diameter_m)) return refused("round bar", notPositive("diameter", diameter_m));
 	const double d = diameter_m;
 	SectionProperties s;
 	s.shape = "round bar";
@@ -79,11 +99,12 @@ SectionProperties roundBar(double diameter_m)
 
 SectionProperties tube(double outer_diameter_m, double wall_m)
 {
-	requirePositive("outer diameter", outer_diameter_m);
+	if (!positive(outer_diameter_m)) return refused("tube", notPositive("outer diameter", outer_diameter_m));
 	if (!(wall_m > 0) || !(2.0 * wall_m < outer_diameter_m))
 	{
-		throw std::invalid_argument("wall: " + std::to_string(wall_m) + " is not in (0, outer diameter / 2 = " +
-									std::to_string(outer_diameter_m / 2.0) + ") m");
+		std::ostringstream range;
+		range << "(0, outer diameter / 2 = " << outer_diameter_m / 2.0 << ")";
+		return refused("tube", notIn("wall", wall_m, range.str()));
 	}
 	const double D = outer_diameter_m, d = outer_diameter_m - 2.0 * wall_m;
 	SectionProperties s;
@@ -101,17 +122,19 @@ SectionProperties tube(double outer_diameter_m, double wall_m)
 
 SectionProperties iSection(double depth_m, double flange_width_m, double web_thickness_m, double flange_thickness_m)
 {
-	requirePositive("depth", depth_m);
-	requirePositive("flange width", flange_width_m);
+	if (!positive(depth_m)) return refused("I section", notPositive("depth", depth_m));
+	if (!positive(flange_width_m)) return refused("I section", notPositive("flange width", flange_width_m));
 	if (!(flange_thickness_m > 0) || !(2.0 * flange_thickness_m < depth_m))
 	{
-		throw std::invalid_argument("flange thickness: " + std::to_string(flange_thickness_m) + " is not in (0, depth / 2 = " +
-									std::to_string(depth_m / 2.0) + ") m");
+		std::ostringstream range;
+		range << "(0, depth / 2 = " << depth_m / 2.0 << ")";
+		return refused("I section", notIn("flange thickness", flange_thickness_m, range.str()));
 	}
 	if (!(web_thickness_m > 0) || !(web_thickness_m <= flange_width_m))
 	{
-		throw std::invalid_argument("web thickness: " + std::to_string(web_thickness_m) + " is not in (0, flange width = " +
-									std::to_string(flange_width_m) + "] m");
+		std::ostringstream range;
+		range << "(0, flange width = " << flange_width_m << "]";
+		return refused("I section", notIn("web thickness", web_thickness_m, range.str()));
 	}
 	const double h = depth_m, b = flange_width_m, tw = web_thickness_m, tf = flange_thickness_m;
 	const double hw = h - 2.0 * tf;  // clear web depth
@@ -145,9 +168,9 @@ SectionCapacities capacities(const SectionProperties& s, const Material& m)
 
 SegmentStiffness stiffness(const SectionProperties& s, const Material& m, double segment_length_m)
 {
-	requirePositive("segment length", segment_length_m);
-	const double L = segment_length_m;
 	SegmentStiffness k;
+	if (!positive(segment_length_m)) return k;
+	const double L = segment_length_m;
 	k.axial_n_m = m.youngs_modulus_pa * s.area_m2 / L;
 	k.shear_n_m = m.shearModulus_pa() * s.shear_area_m2 / L;
 	k.bending_y_nm_rad = m.youngs_modulus_pa * s.second_moment_y_m4 / L;

@@ -1,11 +1,12 @@
 // Cross-sections of a member: geometric properties, plastic capacities and elastic stiffness per length.
 // The member runs along its local x; the section lies in y-z. "About y" is bending in the x-z plane (the
 // depth along z resists it), "about z" bending in the x-y plane. Every length is in m, every result carries
-// its unit in its name. Invalid dimensions are refused with std::invalid_argument naming the parameter and
-// its valid range.
+// its unit in its name. Invalid dimensions are refused, not thrown: the section comes back with every property 0 and
+// its error naming the parameter and its valid range (validate(section)).
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "Material.h"
 
@@ -35,7 +36,11 @@ struct SectionProperties
 	double torsion_constant_m4 = 0;      // St Venant J: torsional stiffness G J / L
 	double plastic_torsion_modulus_m3 = 0;  // fully plastic torque = tau_y * this
 	BiaxialInteraction biaxial_interaction = BiaxialInteraction::None;
+	std::string error;  // empty for a valid section; else why the factory refused it (its properties are 0)
 };
+
+// the section's error, if it has one (a message naming the parameter and its valid range)
+std::vector<std::string> validate(const SectionProperties& section);
 
 // Capacities (N, N m) of a section of a material: the forces and moments at which it is fully plastic.
 struct SectionCapacities
@@ -70,6 +75,7 @@ SectionProperties tube(double outer_diameter_m, double wall_m);
 SectionProperties iSection(double depth_m, double flange_width_m, double web_thickness_m, double flange_thickness_m);
 
 SectionCapacities capacities(const SectionProperties& section, const Material& material);
+// all 0 for a segment length that is not in (0, inf) m (JointSpec's validate names it)
 SegmentStiffness stiffness(const SectionProperties& section, const Material& material, double segment_length_m);
 
 // St Venant torsion constant of a solid rectangle with sides a >= b: beta a b^3, beta = 1/3 (1 - 0.63 b/a +

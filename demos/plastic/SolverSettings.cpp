@@ -2,7 +2,6 @@
 
 #include <cstdlib>
 #include <sstream>
-#include <stdexcept>
 #include <string>
 
 #include "BulletDynamics/MLCPSolvers/btDantzigSolver.h"
@@ -14,7 +13,6 @@ namespace plastic
 JointSolverSettings upstreamJointSolverSettings()
 {
 	JointSolverSettings s;
-	s.warm_starting_factor = 0;
 	s.override_iterations = 0;
 	s.split_position_correction = false;
 	return s;
@@ -60,6 +58,7 @@ WorldSolverSettings upstreamWorldSolverSettings()
 
 StructureWorld::StructureWorld(const WorldSolverSettings& settings)
 	: m_settings(settings),
+	  m_errors(validate(settings)),
 	  m_configuration(std::make_unique<btDefaultCollisionConfiguration>()),
 	  m_dispatcher(std::make_unique<btCollisionDispatcher>(m_configuration.get())),
 	  m_broadphase(std::make_unique<btDbvtBroadphase>()),
@@ -67,18 +66,22 @@ StructureWorld::StructureWorld(const WorldSolverSettings& settings)
 {
 	m_world = std::make_unique<btDiscreteDynamicsWorld>(m_dispatcher.get(), m_broadphase.get(), m_solver.get(), m_configuration.get());
 	m_world->setGravity(btVector3(0, 0, 0));
-	configureWorld(*m_world, settings);  // validates the settings
+	configureWorld(*m_world, settings);  // not when m_errors
 }
 
 StructureWorld::~StructureWorld() = default;
 
 int StructureWorld::stepFrame(double frame_s)
 {
+	if (!m_errors.empty()) return 0;
 	const int substeps = static_cast<int>(frame_s / m_settings.internal_step_s) + 2;
 	return m_world->stepSimulation(btScalar(frame_s), substeps, btScalar(m_settings.internal_step_s));
 }
 
-void StructureWorld::stepOnce() { m_world->stepSimulation(btScalar(m_settings.internal_step_s), 0); }
+void StructureWorld::stepOnce()
+{
+	if (m_errors.empty()) m_world->stepSimulation(btScalar(m_settings.internal_step_s), 0);
+}
 
 OwnedSolver::OwnedSolver(SolverKind kind)
 {
@@ -131,14 +134,11 @@ std::vector<std::string> validate(const WorldSolverSettings& settings, const cha
 	return errors;
 }
 
-void configureWorld(btDynamicsWorld& world, const WorldSolverSettings& settings)
+bool configureWorld(btDynamicsWorld& world, const WorldSolverSettings& settings)
 {
-	const std::vector<std::string> errors = validate(settings);
-	if (!errors.empty())
+	if (!validate(settings).empty())
 	{
-		std::string all = errors.front();
-		for (size_t i = 1; i < errors.size(); i++) all += "; " + errors[i];
-		throw std::invalid_argument(all);
+		return false;
 	}
 	btContactSolverInfo& info = world.getSolverInfo();
 	info.m_numIterations = settings.iterations;
@@ -147,20 +147,26 @@ void configureWorld(btDynamicsWorld& world, const WorldSolverSettings& settings)
 		info.m_solverMode |= SOLVER_RANDMIZE_ORDER;
 	else
 		info.m_solverMode &= ~SOLVER_RANDMIZE_ORDER;
+	return true;
 }
 
-void configureJoint(btTypedConstraint& joint, const JointSolverSettings& settings, bool allowSplitPositionCorrection)
+std::vector<std::string> validate(const JointSolverSettings& settings)
 {
-	if (!(settings.warm_starting_factor >= 0 && settings.warm_starting_factor <= 1))
-	{
-		throw std::invalid_argument("warm starting factor: " + std::to_string(settings.warm_starting_factor) + " is not in [0, 1]");
-	}
 	if (settings.override_iterations < 0)
 	{
-		throw std::invalid_argument("override iterations: " + std::to_string(settings.override_iterations) + " is not in [0, inf)");
+		return {"override iterations: " + std::to_string(settings.override_iterations) + " is not in [0, inf)"};
 	}
-	joint.setWarmStartingFactor(btScalar(settings.warm_starting_factor));
+	return {};
+}
+
+bool configureJoint(btTypedConstraint& joint, const JointSolverSettings& settings, bool allowSplitPositionCorrection)
+{
+	if (!validate(settings).empty())
+	{
+		return false;
+	}
 	joint.setOverrideNumSolverIterations(settings.override_iterations > 0 ? settings.override_iterations : -1);
 	joint.setSplitPositionCorrection(settings.split_position_correction && allowSplitPositionCorrection);
+	return true;
 }
 }  // namespace plastic

@@ -14,12 +14,10 @@ class btMLCPSolverInterface;
 
 namespace plastic
 {
-// What a joint asks of the solver; the joint factory applies it to every joint it makes.
+// What a joint asks of the solver; the joint factory applies it to every joint it makes. Only what the pull-request
+// patches give (warm starting of a joint's rows, patch 0020, is not for upstream: the game-settings probe sets it).
 struct JointSolverSettings
 {
-	// rows of the joint start each step at this factor times their previous impulses (patch 0020,
-	// btTypedConstraint::setWarmStartingFactor); 0 = off, as upstream
-	double warm_starting_factor = 0.0;
 	// btTypedConstraint::setOverrideNumSolverIterations: 0 = the world's iterations
 	int override_iterations = 0;
 	// patch 0002, btTypedConstraint::setSplitPositionCorrection: only joints whose rows hold position errors alone
@@ -27,8 +25,8 @@ struct JointSolverSettings
 	bool split_position_correction = false;
 };
 
-// Upstream's behaviour for a joint: no warm starting, the world's iterations, Baumgarte correction (today the
-// same as the default: the toolkit's default is in the world's solver).
+// Upstream's behaviour for a joint: the world's iterations, Baumgarte correction (today the same as the default: the
+// toolkit's default is in the world's solver).
 JointSolverSettings upstreamJointSolverSettings();
 
 enum class SolverKind
@@ -75,7 +73,8 @@ private:
 WorldSolverSettings upstreamWorldSolverSettings();
 
 // A discrete dynamics world for a structure (collision configuration, dispatcher, broadphase, the settings' solver),
-// zero gravity until the scene sets it. stepFrame advances one frame in fixed internal steps of the settings.
+// zero gravity until the scene sets it. stepFrame advances one frame in fixed internal steps of the settings. Settings
+// that validate refuses are not applied: the world is not configured, errors() says why, and it does not step.
 class StructureWorld
 {
 public:
@@ -86,7 +85,8 @@ public:
 	btDiscreteDynamicsWorld& world() { return *m_world; }
 	int solverFallbacks() const { return m_solver.fallbacks(); }
 	const WorldSolverSettings& settings() const { return m_settings; }
-	// stepSimulation(frame, enough substeps, internal step); returns the internal steps taken
+	const std::vector<std::string>& errors() const { return m_errors; }  // validate(settings): empty when it steps
+	// stepSimulation(frame, enough substeps, internal step); returns the internal steps taken (0 when errors())
 	int stepFrame(double frame_s);
 	// exactly one internal step of the settings (stepSimulation(internal step, 0)), for scenes that act before and
 	// after every internal step
@@ -94,6 +94,7 @@ public:
 
 private:
 	WorldSolverSettings m_settings;
+	std::vector<std::string> m_errors;
 	std::unique_ptr<btDefaultCollisionConfiguration> m_configuration;
 	std::unique_ptr<btCollisionDispatcher> m_dispatcher;
 	std::unique_ptr<btDbvtBroadphase> m_broadphase;
@@ -101,13 +102,17 @@ private:
 	std::unique_ptr<btDiscreteDynamicsWorld> m_world;
 };
 
-// The world's solver info from the settings (iterations, ERP, solver mode).
-void configureWorld(btDynamicsWorld& world, const WorldSolverSettings& settings);
+// The world's solver info from the settings (iterations, ERP, solver mode); false, and the world untouched, when
+// validate(settings) is not empty.
+bool configureWorld(btDynamicsWorld& world, const WorldSolverSettings& settings);
 
 // The one check of a WorldSolverSettings (every scene and runner uses it): internal step in [1e-6, 0.05] s,
 // iterations in [1, 100000], erp in (0, 1]. One message per bad field, naming it (the internal step as
 // internalStepName, the runners' flag: "dt", "internal-step"); empty when every field is valid.
 std::vector<std::string> validate(const WorldSolverSettings& settings, const char* internalStepName = "internal step");
-// A joint's solver settings; split_position_correction only where allowMomentumFreeCorrection.
-void configureJoint(btTypedConstraint& joint, const JointSolverSettings& settings, bool allowSplitPositionCorrection);
+// The one check of a JointSolverSettings: override iterations in [0, inf). Empty when valid.
+std::vector<std::string> validate(const JointSolverSettings& settings);
+// A joint's solver settings; split_position_correction only where allowSplitPositionCorrection. False, and the joint
+// untouched, when validate(settings) is not empty.
+bool configureJoint(btTypedConstraint& joint, const JointSolverSettings& settings, bool allowSplitPositionCorrection);
 }  // namespace plastic

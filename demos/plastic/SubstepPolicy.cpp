@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-#include <stdexcept>
 
 #include "btBulletDynamicsCommon.h"
 
@@ -70,23 +69,13 @@ std::vector<std::string> validate(const ContactSubstepSettings& settings)
 	return errors;
 }
 
-ContactSubstepPolicy::ContactSubstepPolicy(const ContactSubstepSettings& settings)
-	: m_settings(settings)
-{
-	const std::vector<std::string> errors = validate(settings);
-	if (!errors.empty())
-	{
-		throw std::invalid_argument(errors.front());
-	}
-}
+ContactSubstepPolicy::ContactSubstepPolicy(const ContactSubstepSettings& settings) : m_settings(settings), m_errors(validate(settings)) {}
 
 int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact, const Step& step) const
 {
-	if (!(std::isfinite(frame_s) && frame_s > 0))
+	if (!(std::isfinite(frame_s) && frame_s > 0) || !m_errors.empty())
 	{
-		std::ostringstream out;
-		out << "frame: " << frame_s << " s is not a positive step";
-		throw std::invalid_argument(out.str());
+		return -1;
 	}
 	const double h = m_settings.contact_substep_s;
 	int steps = 0;

@@ -30,16 +30,20 @@ public:
 	using NearContact = std::function<bool(double horizon_s)>;  // can a contact happen within horizon_s?
 	using Step = std::function<void(double step_s)>;           // one internal step of the world
 
-	explicit ContactSubstepPolicy(const ContactSubstepSettings& settings);  // throws std::invalid_argument
+	// settings that validate refuses are kept out: errors() says why, and advance steps nothing
+	explicit ContactSubstepPolicy(const ContactSubstepSettings& settings);
 
 	// Advances one frame: the part of the frame that reaches no contact within its own length is one step (or a
 	// few halves), the part in or near contact is cut into steps of at most contact_substep_s. The contact test
-	// is made again after every internal step. Returns the number of internal steps.
+	// is made again after every internal step. Returns the number of internal steps; -1, with no step, for a frame
+	// that is not a positive finite time or when errors() is not empty.
 	int advance(double frame_s, const NearContact& nearContact, const Step& step) const;
 
 	const ContactSubstepSettings& settings() const { return m_settings; }
+	const std::vector<std::string>& errors() const { return m_errors; }
 
 private:
 	ContactSubstepSettings m_settings;
+	std::vector<std::string> m_errors;
 };
 }  // namespace plastic

@@ -2,7 +2,7 @@
 #include <limits>
 
 #include "Cantilever.h"
-#include "Section.h"
+#include "plastic/Section.h"
 
 namespace structures
 {

@@ -6,19 +6,20 @@
 #include <limits>
 #include <memory>
 
-#include "BeamBuilder.h"
+#include "plastic/BeamBuilder.h"
 #include "Cantilever.h"
 #include "CollapseTest.h"
-#include "EnergyLedger.h"
+#include "plastic/EnergyLedger.h"
 #include "JointSites.h"
 #include "Measures.h"
+#include "scene/Errors.h"
 
 namespace structures
 {
 struct CantileverScene::State
 {
 	explicit State(const CantileverParameters& params)
-		: p(params), start(std::chrono::steady_clock::now()), answer(cantileverAnswer(p)), rig(p.solver), beam(rig.world(), beamSpec(p), &rig.ground()), load(*beam.segments().back(), btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, btScalar(-answer.collapse_load_n), 0), p.follower_load), test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * answer.collapse_ratio, p.collapse_rate_rad_s, p.rate_window_s, p.mechanism_rotation_rad, p.hold_s}), ledger(btVector3(0, 0, 0))
+		: p(params), start(std::chrono::steady_clock::now()), answer(cantileverAnswer(p)), rig(p.solver), beam(rig.world(), scene::requireValid(beamSpec(p)), &rig.ground()), load(*beam.segments().back(), btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, btScalar(-answer.collapse_load_n), 0), p.follower_load), test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * answer.collapse_ratio, p.collapse_rate_rad_s, p.rate_window_s, p.mechanism_rotation_rad, p.hold_s}), ledger(btVector3(0, 0, 0))
 	{
 	}
 

@@ -1,5 +1,5 @@
 #include "DropWeight.h"
-#include "Section.h"
+#include "plastic/Section.h"
 
 namespace structures
 {

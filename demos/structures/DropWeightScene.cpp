@@ -7,11 +7,12 @@
 #include <limits>
 #include <memory>
 
-#include "BeamBuilder.h"
+#include "plastic/BeamBuilder.h"
 #include "DropWeight.h"
-#include "EnergyLedger.h"
+#include "plastic/EnergyLedger.h"
 #include "JointSites.h"
 #include "Measures.h"
+#include "scene/Errors.h"
 
 namespace structures
 {
@@ -56,7 +57,7 @@ struct DropWeightScene::State
 		  start(std::chrono::steady_clock::now()),
 		  answer(dropWeightAnswer(p)),
 		  rig(p.solver),
-		  beam(rig.world(), beamSpec(p), p.clamped ? &rig.ground() : nullptr),
+		  beam(rig.world(), scene::requireValid(beamSpec(p)), p.clamped ? &rig.ground() : nullptr),
 		  rightEnd(btScalar(p.span_m), 0, 0),
 		  carriageShape(btVector3(btScalar(p.section_width_m / 2), btScalar(p.section_depth_m / 2), btScalar(p.section_width_m / 2))),
 		  ballShape(btScalar(p.weight_radius_m))
@@ -132,7 +133,7 @@ DropWeightScene::DropWeightScene(const DropWeightParameters& p) : m(std::make_un
 	s.rightSpec = s.beam.jointSpecs().empty() ? plastic::JointSpec{} : s.beam.jointSpecs().back();
 	s.rightSpec.pivot_m = s.rightEnd;
 	if (p.clamped)
-		s.rightClamp = plastic::makeJoint(s.rightSpec, *segments.back(), *s.carriage);
+		s.rightClamp = plastic::makeJoint(scene::requireValid(s.rightSpec), *segments.back(), *s.carriage);
 	else
 		s.rightPin = pin(*segments.back(), *s.carriage, s.rightEnd);
 	s.rightInWorld = std::make_unique<ConstraintInWorld>(s.rig.world(), p.clamped ? *s.rightClamp.constraint : static_cast<btTypedConstraint&>(*s.rightPin));

@@ -2,7 +2,7 @@
 // its second body (always a moving one), so the pivot follows the structure as it bends.
 #pragma once
 
-#include "JointFactory.h"
+#include "plastic/JointFactory.h"
 #include "SteppedScene.h"
 
 namespace structures

@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "Portal.h"
-#include "Section.h"
+#include "plastic/Section.h"
 
 namespace structures
 {

@@ -8,12 +8,13 @@
 #include <limits>
 #include <memory>
 
-#include "BeamBuilder.h"
+#include "plastic/BeamBuilder.h"
 #include "CollapseTest.h"
-#include "EnergyLedger.h"
+#include "plastic/EnergyLedger.h"
 #include "JointSites.h"
 #include "Measures.h"
 #include "Portal.h"
+#include "scene/Errors.h"
 
 namespace structures
 {
@@ -45,13 +46,13 @@ struct PortalScene::State
 		  L(btScalar(p.span_m)),
 		  h(btScalar(p.height_m)),
 		  // left column from its base up, fixed to the ground
-		  columnLeft(rig.world(), memberSpec(p, btVector3(0, 0, 0), btVector3(0, h, 0), p.column_segments), &rig.ground()),
+		  columnLeft(rig.world(), scene::requireValid(memberSpec(p, btVector3(0, 0, 0), btVector3(0, h, 0), p.column_segments)), &rig.ground()),
 		  // the beam from the left knee, joined to the left column's top
-		  beam(rig.world(), memberSpec(p, btVector3(0, h, 0), btVector3(L, h, 0), p.beam_segments), columnLeft.segments().back()),
+		  beam(rig.world(), scene::requireValid(memberSpec(p, btVector3(0, h, 0), btVector3(L, h, 0), p.beam_segments)), columnLeft.segments().back()),
 		  // the right column from the right knee down, joined to the beam's end; its base joined to the ground
-		  columnRight(rig.world(), memberSpec(p, btVector3(L, h, 0), btVector3(L, 0, 0), p.column_segments), beam.segments().back()),
+		  columnRight(rig.world(), scene::requireValid(memberSpec(p, btVector3(L, h, 0), btVector3(L, 0, 0), p.column_segments)), beam.segments().back()),
 		  baseSpec(baseOf(columnRight, L)),
-		  base(plastic::makeJoint(baseSpec, *columnRight.segments().back(), rig.ground())),
+		  base(plastic::makeJoint(scene::requireValid(baseSpec), *columnRight.segments().back(), rig.ground())),
 		  baseInWorld(rig.world(), *base.constraint),
 		  // loads: H at the left knee (the top end of the left column), V at mid-span (the end of the beam's left half)
 		  horizontal(*columnLeft.segments().back(), btVector3(0, 0, btScalar(columnLeft.segmentLength_m() / 2)),

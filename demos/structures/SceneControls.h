@@ -10,7 +10,7 @@
 
 #include "Cantilever.h"
 #include "DropWeight.h"
-#include "JointFactory.h"
+#include "plastic/JointFactory.h"
 #include "Portal.h"
 #include "SteppedScene.h"
 

@@ -7,8 +7,8 @@
 #include <functional>
 #include <vector>
 
-#include "JointFactory.h"
-#include "SolverSettings.h"
+#include "plastic/JointFactory.h"
+#include "plastic/SolverSettings.h"
 
 namespace structures
 {

@@ -1,6 +1,6 @@
 #include "StructuresCommandLine.h"
 
-#include "FlagArgument.h"
+#include "scene/FlagArgument.h"
 
 #include <cerrno>
 #include <cstdlib>
@@ -11,8 +11,8 @@ namespace structures
 {
 namespace
 {
-using plastic::parseInteger;
-using plastic::parseNumber;
+using scene::parseInteger;
+using scene::parseNumber;
 
 bool parseMethod(const std::string& text, plastic::JointMethod& method)
 {
@@ -186,7 +186,7 @@ StructuresCommandLine parseStructuresCommandLine(const std::vector<std::string>&
 	std::vector<std::pair<std::string, std::pair<bool, std::string>>> flags;
 	for (const std::string& argument : arguments)
 	{
-		const std::optional<plastic::FlagArgument> flag = plastic::splitFlagArgument(argument, cl.errors);
+		const std::optional<scene::FlagArgument> flag = scene::splitFlagArgument(argument, cl.errors);
 		if (!flag)
 		{
 			continue;

@@ -6,9 +6,9 @@
 // included) for both direct solvers. ci/game_settings.sh adds the table to report/GAME_SETTINGS.md.
 #include <benchmark/benchmark.h>
 
-#include "BeamBuilder.h"
-#include "EnergyLedger.h"
-#include "SolverSettings.h"
+#include "plastic/BeamBuilder.h"
+#include "plastic/EnergyLedger.h"
+#include "plastic/SolverSettings.h"
 
 using namespace plastic;
 

@@ -2,7 +2,8 @@
 # check what it installs, then build and run three consumers against it, as users write them:
 #   module   plain find_package(Bullet REQUIRED): CMake's own FindBullet module (it wants BulletSoftBody too)
 #   config   find_package(Bullet CONFIG REQUIRED): our BulletConfig.cmake; also builds `extras`
-#            (BulletSoftBody and BulletInverseDynamics through their imported targets)
+#            (BulletSoftBody and BulletInverseDynamics through their imported targets) and `toolkit` (a plastic
+#            beam from the installed scene toolkit, Bullet::PlasticToolkit, compiled with -fno-exceptions)
 #   pkg-config   c++ main.cpp $(pkg-config --cflags --libs bullet)
 # Each consumer steps a world with a plastic hinge (a patched API) and lists the shared Bullet libraries its
 # process loaded: none for a static install, the installed lib*.so.<version> for a shared one; ldd must agree.
@@ -89,6 +90,11 @@ foreach(header btBulletCollisionCommon.h btBulletDynamicsCommon.h BulletCollisio
 		message(FATAL_ERROR "not installed: include/bullet/${header}")
 	endif()
 endforeach()
+foreach(header BeamBuilder.h EnergyLedger.h JointFactory.h Material.h Section.h SolverSettings.h SubstepPolicy.h)
+	if(NOT EXISTS "${prefix}/include/bullet-plasticity/plastic/${header}")
+		message(FATAL_ERROR "not installed: include/bullet-plasticity/plastic/${header}")
+	endif()
+endforeach()
 foreach(file BulletConfig.cmake BulletConfigVersion.cmake BulletPlasticityTargets.cmake UseBullet.cmake)
 	if(NOT EXISTS "${libdir}/cmake/bullet/${file}")
 		message(FATAL_ERROR "not installed: ${BP_LIBDIR}/cmake/bullet/${file}")
@@ -161,6 +167,8 @@ run("${CMAKE_COMMAND}" --build "${WORK}/config")
 check_run("find_package(Bullet CONFIG)" "${WORK}/config/consumer")
 run("${WORK}/config/extras")
 message(STATUS "extras: ${out}")
+run("${WORK}/config/toolkit")
+message(STATUS "toolkit: ${out}")
 elapsed(${start} "CONFIG consumer")
 
 # ---- 3. pkg-config ----

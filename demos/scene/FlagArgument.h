@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace plastic
+namespace scene
 {
 struct FlagArgument
 {
@@ -59,4 +59,4 @@ inline bool parseInteger(const std::string& text, int& value)
 	value = static_cast<int>(d);
 	return true;
 }
-}  // namespace plastic
+}  // namespace scene
