@@ -33,6 +33,11 @@ std::vector<std::string> validate(const BeamSpec& spec)
 	{
 		errors.push_back("bending axis: it must not be parallel to the member");
 	}
+	const SectionProperties& section = spec.joint.section;
+	if (section.error.empty() && !(section.width_m > 0 && section.depth_m > 0 && section.area_m2 > 0))
+	{
+		errors.push_back("joint.section: a beam's segments need a section (their box and mass), also when the joint's capacities are given");
+	}
 	// the joints' own fields; their segment length is the beam's, set by the beam
 	JointSpec joint = spec.joint;
 	if (errors.empty()) joint.segment_length_m = (spec.end_m - spec.start_m).length() / spec.segments;

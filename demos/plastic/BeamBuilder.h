@@ -17,9 +17,9 @@ struct BeamSpec
 	btVector3 end_m{1, 0, 0};
 	int segments = 4;
 	btVector3 bending_axis{0, 0, 1};  // world axis of the main bending (a hinge's axis), across the member
-	// every joint of the member (and its support): method, section, material, limits, solver settings, yield
-	// surface; the beam sets each one's pivot, basis and segment length. The segments' boxes and masses come from
-	// its section and material.
+	// every joint of the member (and its support): method, section, material (or capacities and stiffnesses given
+	// directly), limits, solver settings, yield surface; the beam sets each one's pivot, basis and segment length. The
+	// segments' boxes and masses come from its section and material, which a beam always needs.
 	JointSpec joint;
 };
 

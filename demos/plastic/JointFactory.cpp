@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace plastic
 {
@@ -27,8 +28,8 @@ btPlasticConstraintSettings plasticSettings(const JointSpec& spec)
 template <class Constraint, class Stiffness>
 void configureElasticPlastic(Constraint& c, const JointSpec& spec, Stiffness setStiffness)
 {
-	const SectionCapacities cap = capacities(spec.section, spec.material);
-	const SegmentStiffness k = stiffness(spec.section, spec.material, spec.segment_length_m);
+	const SectionCapacities cap = jointCapacities(spec);
+	const SegmentStiffness k = jointStiffness(spec);
 	const double maxForce[6] = {cap.shear_n, cap.shear_n, cap.axial_n, cap.plastic_moment_y_nm, cap.plastic_moment_z_nm, cap.torque_nm};
 	const double stiff[6] = {k.shear_n_m, k.shear_n_m, k.axial_n_m, k.bending_y_nm_rad, k.bending_z_nm_rad, k.torsion_nm_rad};
 	for (int i = 0; i < 6; i++)
@@ -45,7 +46,7 @@ void configureElasticPlastic(Constraint& c, const JointSpec& spec, Stiffness set
 template <class Constraint, class Stiffness>
 void configureSprings(Constraint& c, const JointSpec& spec, Stiffness setStiffness)
 {
-	const SectionCapacities cap = capacities(spec.section, spec.material);
+	const SectionCapacities cap = jointCapacities(spec);
 	const double moment[3] = {cap.plastic_moment_y_nm, cap.plastic_moment_z_nm, cap.torque_nm};
 	c.setLinearLowerLimit(btVector3(0, 0, 0));
 	c.setLinearUpperLimit(btVector3(0, 0, 0));
@@ -91,6 +92,13 @@ static void setYieldSurface(bt6DofElasticPlastic2Constraint& c, const JointSpec&
 	}
 }
 
+SectionCapacities jointCapacities(const JointSpec& spec) { return spec.capacities ? *spec.capacities : capacities(spec.section, spec.material); }
+
+SegmentStiffness jointStiffness(const JointSpec& spec)
+{
+	return spec.stiffness ? *spec.stiffness : stiffness(spec.section, spec.material, spec.segment_length_m);
+}
+
 std::vector<std::string> validate(const JointSpec& spec)
 {
 	std::vector<std::string> errors = validate(spec.section);
@@ -111,6 +119,20 @@ std::vector<std::string> validate(const JointSpec& spec)
 	if (!(spec.min_steps_per_period >= 1 && std::isfinite(spec.min_steps_per_period)))
 	{
 		notIn("min_steps_per_period", spec.min_steps_per_period, "[1, inf) steps per period");
+	}
+	if (spec.capacities)
+	{
+		const SectionCapacities& c = *spec.capacities;
+		const std::pair<const char*, double> given[] = {{"capacities.axial_n", c.axial_n}, {"capacities.shear_n", c.shear_n}, {"capacities.plastic_moment_y_nm", c.plastic_moment_y_nm}, {"capacities.plastic_moment_z_nm", c.plastic_moment_z_nm}, {"capacities.torque_nm", c.torque_nm}};
+		for (const auto& g : given)
+			if (!(g.second > 0)) notIn(g.first, g.second, "(0, inf] N or N m");
+	}
+	if (spec.stiffness)
+	{
+		const SegmentStiffness& k = *spec.stiffness;
+		const std::pair<const char*, double> given[] = {{"stiffness.axial_n_m", k.axial_n_m}, {"stiffness.shear_n_m", k.shear_n_m}, {"stiffness.bending_y_nm_rad", k.bending_y_nm_rad}, {"stiffness.bending_z_nm_rad", k.bending_z_nm_rad}, {"stiffness.torsion_nm_rad", k.torsion_nm_rad}};
+		for (const auto& g : given)
+			if (!(g.second > 0 && std::isfinite(g.second))) notIn(g.first, g.second, "(0, inf) N/m or N m/rad");
 	}
 	if (spec.method == JointMethod::Brittle && !(spec.breaking_force_n > 0))
 	{
@@ -146,7 +168,7 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 						spec.basis[2][1], spec.basis[2][2], spec.basis[2][0]);
 	JointSpec hingeSpec = spec;
 	hingeSpec.basis = hingeBasis;
-	const SectionCapacities cap = capacities(spec.section, spec.material);
+	const SectionCapacities cap = jointCapacities(spec);
 	switch (spec.method)
 	{
 		case JointMethod::Brittle:
@@ -215,7 +237,7 @@ void updateJointForStep(btTypedConstraint& joint, const JointSpec& spec, double 
 {
 	if (spec.method == JointMethod::HingeMotor)
 	{
-		static_cast<btHingeConstraint&>(joint).setMaxMotorImpulse(btScalar(capacities(spec.section, spec.material).plastic_moment_y_nm * step_s));
+		static_cast<btHingeConstraint&>(joint).setMaxMotorImpulse(btScalar(jointCapacities(spec).plastic_moment_y_nm * step_s));
 	}
 	else if (spec.method == JointMethod::Brittle)
 	{

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,8 +41,15 @@ struct JointSpec
 	JointMethod method = JointMethod::PlasticHinge;
 	btVector3 pivot_m{0, 0, 0};
 	btMatrix3x3 basis = btMatrix3x3::getIdentity();  // world: bending axis 1 (hinge axis), bending axis 2, member axis
+	// the section and material the capacities and stiffnesses come from (and, in a BeamBuilder, the segments' box and
+	// mass), unless they are given directly below
 	SectionProperties section;
 	Material material;
+	// given directly (a game's own numbers, N and N m), instead of capacities(section, material); a capacity of
+	// SIMD_INFINITY leaves that DOF rigid
+	std::optional<SectionCapacities> capacities;
+	// given directly for this joint's segment (N/m, N m/rad), instead of stiffness(section, material, segment length)
+	std::optional<SegmentStiffness> stiffness;
 	double segment_length_m = 1.0;         // centre-to-centre of the bodies it joins: the elastic stiffness' length
 	double max_plastic_rotation_rad = 1e9; // accumulated plastic rotation that breaks it
 	double min_steps_per_period = 25.0;    // elastic-plastic: steps per natural period below which a DOF is rigid-plastic
@@ -64,6 +72,10 @@ struct Joint
 	double elasticEnergy_j() const;
 	double plasticRotation_rad() const { return plasticState ? plasticState->getCurrentPlasticRotation() : 0.0; }
 };
+
+// The joint's capacities and stiffnesses: the ones given directly, or the section's of the material.
+SectionCapacities jointCapacities(const JointSpec& spec);
+SegmentStiffness jointStiffness(const JointSpec& spec);
 
 // A message per field of the spec that is out of its range (naming the field and its range; the section's error and
 // the solver settings' included); empty when makeJoint can make the joint.

@@ -132,6 +132,10 @@ TEST(ToolkitCantilever, BadSpecificationsAreRefusedByName)
 	spec.joint.solver.override_iterations = -1;
 	EXPECT_NE(refusal(spec).find("override iterations"), std::string::npos);
 	spec.joint.solver.override_iterations = 0;
+	spec.joint.section = SectionProperties();  // capacities given directly still need a section for the segments
+	spec.joint.capacities = capacities(rectangle(0.05, 0.1), steel());
+	EXPECT_NE(refusal(spec).find("joint.section: a beam's segments need a section"), std::string::npos);
+	spec.joint.section = rectangle(0.05, 0.1);
 	Beam good(rig.world, spec, &rig.support);
 	EXPECT_TRUE(good.errors().empty());
 	EXPECT_EQ(2u, good.segments().size());
