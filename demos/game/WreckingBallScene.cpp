@@ -41,6 +41,7 @@ struct WreckingBallScene::State
 	plastic::BeamSpec memberSpec(const btVector3& start, const btVector3& end, int segments) const
 	{
 		plastic::BeamSpec spec;
+		spec.may_sleep = false;  // as the figures were made (the frame would sleep until the ball wakes it)
 		spec.start_m = start;
 		spec.end_m = end;
 		spec.segments = segments;

@@ -84,6 +84,7 @@ ProbeRun runRigid(const ProbeCase& c, JointMethod method, const ProbeSetting& se
 	for (const MemberPlan& m : members)
 	{
 		BeamSpec spec;
+		spec.may_sleep = false;  // its loads change on resting bodies
 		spec.start_m = m.start_m;
 		spec.end_m = m.end_m;
 		spec.segments = m.segments;

@@ -71,7 +71,7 @@ Beam::Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* su
 		info.m_startWorldTransform = btTransform(basis, spec.start_m + axis * btScalar((i + 0.5) * m_segmentLength_m));
 		m_bodies.push_back(std::make_unique<btRigidBody>(info));
 		btRigidBody* body = m_bodies.back().get();
-		body->setActivationState(DISABLE_DEACTIVATION);
+		if (!spec.may_sleep) body->setActivationState(DISABLE_DEACTIVATION);
 		m_world.addRigidBody(body);
 		m_segments.push_back(body);
 		if (previous)

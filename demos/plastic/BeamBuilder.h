@@ -17,6 +17,11 @@ struct BeamSpec
 	btVector3 end_m{1, 0, 0};
 	int segments = 4;
 	btVector3 bending_axis{0, 0, 1};  // world axis of the main bending (a hinge's axis), across the member
+	// Bullet's deactivation for the segments, as for any body: they fall asleep once the member has been at rest for
+	// gDeactivationTime (a yielding joint keeps them awake), and a contact or an active neighbour wakes them. false:
+	// DISABLE_DEACTIVATION, for a scene whose loads change on resting bodies (a load ramp: a force on a sleeping
+	// body does nothing and does not wake it)
+	bool may_sleep = true;
 	// every joint of the member (and its support): method, section, material (or capacities and stiffnesses given
 	// directly), limits, solver settings, yield surface; the beam sets each one's pivot, basis and segment length. The
 	// segments' boxes and masses come from its section and material, which a beam always needs.

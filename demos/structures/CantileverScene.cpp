@@ -27,6 +27,7 @@ struct CantileverScene::State
 	{
 		// the support: the ground, the member along +x from the origin
 		plastic::BeamSpec spec;
+		spec.may_sleep = false;  // its loads change on resting bodies
 		spec.start_m = btVector3(0, 0, 0);
 		spec.end_m = btVector3(btScalar(p.length_m), 0, 0);
 		spec.segments = p.segments;

@@ -28,6 +28,7 @@ std::unique_ptr<btHingeConstraint> pin(btRigidBody& a, btRigidBody& b, const btV
 plastic::BeamSpec beamSpec(const DropWeightParameters& p)
 {
 	plastic::BeamSpec spec;
+	spec.may_sleep = false;  // as its figures were made
 	spec.start_m = btVector3(0, 0, 0);
 	spec.end_m = btVector3(btScalar(p.span_m), 0, 0);
 	spec.segments = p.segments;

@@ -23,6 +23,7 @@ namespace
 plastic::BeamSpec memberSpec(const PortalParameters& p, const btVector3& start, const btVector3& end, int segments)
 {
 	plastic::BeamSpec spec;
+	spec.may_sleep = false;  // its loads change on resting bodies
 	spec.joint.section = plastic::rectangle(p.section_width_m, p.section_depth_m);
 	spec.joint.material.yield_stress_pa = p.yield_stress_pa;
 	spec.joint.material.youngs_modulus_pa = p.youngs_modulus_pa;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "plastic/BeamBuilder.h"
@@ -140,6 +141,53 @@ TEST(ToolkitCantilever, BadSpecificationsAreRefusedByName)
 	EXPECT_TRUE(good.errors().empty());
 	EXPECT_EQ(2u, good.segments().size());
 	EXPECT_EQ(2u, good.joints().size());
+}
+
+// Bodies may sleep (issue 22: a city never slept): a beam's segments fall asleep as any body does, once the member has
+// been at rest for Bullet's deactivation time, and not while a joint yields (issue 21 part 2). A 4-segment cantilever
+// under a dead tip load of 1.05 Mp/L turns about its root to where the load's work equals Mp times the rotation
+// (sin(t) / t = 1 / 1.05: 0.5380 rad), stops, and sleeps about 2 s later; with may_sleep = false (the control) it
+// stops at the same rotation and stays awake.
+TEST(ToolkitCantilever, ASegmentedMemberSleepsOnceItsJointsHold)
+{
+	for (bool maySleep : {true, false})
+	{
+		Rig rig(1000);
+		BeamSpec spec;
+		spec.end_m = btVector3(2, 0, 0);
+		spec.segments = 4;
+		spec.joint.section = rectangle(0.05, 0.10);
+		spec.joint.material = steel();
+		spec.may_sleep = maySleep;
+		Beam beam(rig.world, spec, &rig.support);
+		const double mp = capacities(spec.joint.section, spec.joint.material).plastic_moment_y_nm;
+		PointLoad load(*beam.segments().back(), btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, btScalar(-1.05 * mp / 2.0), 0));
+		const double dt = 1.0 / 240.0;
+		double lastYield_s = 0, asleep_s = -1, rotation = 0;
+		for (int i = 1; i <= 6 * 240; i++)
+		{
+			load.apply();
+			rig.world.stepSimulation(btScalar(dt), 0);
+			load.afterStep();
+			const double now = beam.joints().front().plasticRotation_rad();
+			if (now > rotation) lastYield_s = i * dt;
+			rotation = now;
+			bool sleeping = true;
+			for (const btRigidBody* b : beam.segments()) sleeping = sleeping && b->getActivationState() == ISLAND_SLEEPING;
+			if (sleeping && asleep_s < 0) asleep_s = i * dt;
+		}
+		std::printf("[ info     ] may_sleep %d: root %.4f rad, last yield at %.3f s, asleep at %.3f s\n", int(maySleep), rotation, lastYield_s, asleep_s);
+		EXPECT_NEAR(rotation, 0.5380, 0.01 * 0.5380) << maySleep;
+		if (maySleep)
+		{
+			EXPECT_GT(asleep_s, lastYield_s + 1.9);
+			EXPECT_LT(asleep_s, lastYield_s + 2.5);
+		}
+		else
+		{
+			EXPECT_LT(asleep_s, 0);
+		}
+	}
 }
 
 // A beam of every joint method (issue 22): the beam passes its JointSpec whole to each joint, so a brittle beam gets
