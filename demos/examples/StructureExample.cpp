@@ -32,10 +32,10 @@ const int kLedgerSpareCharacters = 6;
 class StructureExample : public CommonExampleInterface
 {
 public:
-	StructureExample(GUIHelperInterface* guiHelper, structures::ControlledScene kind, int methodNumber)
+	StructureExample(GUIHelperInterface* guiHelper, scene::ControlledScene kind, int methodNumber)
 		: m_guiHelper(guiHelper), m_kind(std::move(kind)), m_timeScale(m_kind.time_scale)
 	{
-		const std::vector<float> initial = structures::initialValues(m_kind);
+		const std::vector<float> initial = scene::initialValues(m_kind);
 		m_sliderValues.assign(initial.begin(), initial.end());  // fixed size from here on: the sliders point into it
 		m_method = methodNumber >= 1 && methodNumber <= 4 ? kMethods[methodNumber - 1] : m_kind.method;
 	}
@@ -72,7 +72,7 @@ public:
 			drawJointMarkers(m_guiHelper, *m_scene);
 		}
 		if (CommonGraphicsApp* app = m_guiHelper->getAppInterface())
-			drawTextLines(app, m_scene ? structures::ledgerText(m_scene->ledger()) : m_kind.name + ": invalid parameters:\n" + m_error, m_framing.ledger_left_px,
+			drawTextLines(app, m_scene ? scene::ledgerText(m_scene->ledger()) : m_kind.name + ": invalid parameters:\n" + m_error, m_framing.ledger_left_px,
 						  m_framing.ledger_top_px);
 	}
 
@@ -133,7 +133,7 @@ private:
 		parameters->registerComboBox(combo);
 		for (size_t i = 0; i < m_kind.sliders.size(); i++)
 		{
-			const structures::SliderSpec& s = m_kind.sliders[i];
+			const scene::SliderSpec& s = m_kind.sliders[i];
 			SliderParams params(s.label, &m_sliderValues[i]);
 			params.m_minVal = s.min;
 			params.m_maxVal = s.max;
@@ -165,20 +165,20 @@ private:
 		}
 		showStructure(m_guiHelper, *m_scene);
 		// room for the ledger as it starts, the status lines the run adds (collapse, stop, broken joints) and longer numbers
-		const ScreenRect start = textRect(structures::ledgerText(m_scene->ledger()), 0, 0);
+		const ScreenRect start = textRect(scene::ledgerText(m_scene->ledger()), 0, 0);
 		m_ledgerLines = (start.height() - kTextLineHeight_px) / kTextLine_px + 1 + kLedgerStatusLines;
 		m_ledgerCharacters = start.width() / kTextChar_px + kLedgerSpareCharacters;
 		resetCamera();
 	}
 
 	GUIHelperInterface* m_guiHelper;
-	structures::ControlledScene m_kind;
+	scene::ControlledScene m_kind;
 	std::vector<btScalar> m_sliderValues;  // what the sliders say (their own storage)
 	std::vector<float> m_applied;          // what the scene was built from
 	plastic::JointMethod m_method = plastic::JointMethod::PlasticHinge;
 	plastic::JointMethod m_appliedMethod = plastic::JointMethod::PlasticHinge;
 	btScalar m_timeScale;
-	std::unique_ptr<structures::SteppedScene> m_scene;
+	std::unique_ptr<scene::SteppedScene> m_scene;
 	std::string m_error;
 	double m_targetTime_s = 0;
 	int m_ledgerLines = 12;

@@ -26,10 +26,10 @@ const float* colourOf(const btCollisionObject* object, const std::map<const btRi
 }
 }  // namespace
 
-std::map<const btRigidBody*, JointColour> bodyStates(const std::vector<structures::JointView>& joints)
+std::map<const btRigidBody*, JointColour> bodyStates(const std::vector<scene::JointView>& joints)
 {
 	std::map<const btRigidBody*, JointColour> states;
-	for (const structures::JointView& j : joints)
+	for (const scene::JointView& j : joints)
 	{
 		const JointColour c = j.broken ? JointColour::Broken : j.yielded ? JointColour::Yielded
 																		 : JointColour::Elastic;
@@ -43,7 +43,7 @@ std::map<const btRigidBody*, JointColour> bodyStates(const std::vector<structure
 	return states;
 }
 
-void showStructure(GUIHelperInterface* guiHelper, structures::SteppedScene& scene)
+void showStructure(GUIHelperInterface* guiHelper, scene::SteppedScene& scene)
 {
 	guiHelper->removeAllGraphicsInstances();
 	btDiscreteDynamicsWorld& world = scene.world();
@@ -57,9 +57,9 @@ void showStructure(GUIHelperInterface* guiHelper, structures::SteppedScene& scen
 	}
 }
 
-void colourStructure(GUIHelperInterface* guiHelper, structures::SteppedScene& scene)
+void colourStructure(GUIHelperInterface* guiHelper, scene::SteppedScene& scene)
 {
-	const std::vector<structures::JointView> joints = scene.joints();
+	const std::vector<scene::JointView> joints = scene.joints();
 	const auto states = bodyStates(joints);
 	btDiscreteDynamicsWorld& world = scene.world();
 	for (int i = 0; i < world.getNumCollisionObjects(); i++)
@@ -72,12 +72,12 @@ void colourStructure(GUIHelperInterface* guiHelper, structures::SteppedScene& sc
 	}
 }
 
-void drawJointMarkers(GUIHelperInterface* guiHelper, structures::SteppedScene& scene)
+void drawJointMarkers(GUIHelperInterface* guiHelper, scene::SteppedScene& scene)
 {
-	const std::vector<structures::JointView> joints = scene.joints();
+	const std::vector<scene::JointView> joints = scene.joints();
 	CommonRenderInterface* renderer = guiHelper->getRenderInterface();
 	if (!renderer) return;
-	for (const structures::JointView& j : joints)
+	for (const scene::JointView& j : joints)
 	{
 		const float* rgba = j.broken ? kBrokenRgba : j.yielded ? kYieldedRgba
 															   : kElasticMarkerRgba;

@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "SteppedScene.h"
+#include "scene/SteppedScene.h"
 
 struct GUIHelperInterface;
 struct CommonGraphicsApp;
@@ -27,11 +27,11 @@ extern const float kOtherBodyRgba[4];   // moving bodies without plastic joints 
 extern const float kStaticBodyRgba[4];  // ground, supports
 
 // the worst state of the joints at each body's ends
-std::map<const btRigidBody*, JointColour> bodyStates(const std::vector<structures::JointView>& joints);
+std::map<const btRigidBody*, JointColour> bodyStates(const std::vector<scene::JointView>& joints);
 
 // graphics objects for every body of the world (replacing any there were), coloured as they stand now
-void showStructure(GUIHelperInterface* guiHelper, structures::SteppedScene& scene);
+void showStructure(GUIHelperInterface* guiHelper, scene::SteppedScene& scene);
 // recolour the bodies (before the world is synced and rendered)
-void colourStructure(GUIHelperInterface* guiHelper, structures::SteppedScene& scene);
+void colourStructure(GUIHelperInterface* guiHelper, scene::SteppedScene& scene);
 // a point at every joint pivot in its state's colour, 0.15 m towards +z (after the world is rendered)
-void drawJointMarkers(GUIHelperInterface* guiHelper, structures::SteppedScene& scene);
+void drawJointMarkers(GUIHelperInterface* guiHelper, scene::SteppedScene& scene);

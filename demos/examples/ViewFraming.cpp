@@ -16,7 +16,7 @@ const int kTextLeft_px = 5;  // the ledger's first column, right of the free rec
 const int kTextTop_px = 4;   // its first line, below the free rectangle's top edge
 const int kLedgerGap_px = 4;
 
-btVector3 corner(const structures::WorldBox& box, int i)
+btVector3 corner(const scene::WorldBox& box, int i)
 {
 	return btVector3(i & 1 ? box.max_m.x() : box.min_m.x(), i & 2 ? box.max_m.y() : box.min_m.y(), i & 4 ? box.max_m.z() : box.min_m.z());
 }
@@ -171,7 +171,7 @@ bool projectToWindow(const CommonCameraInterface& camera, int width_px, int heig
 	return true;
 }
 
-bool projectBox(const CommonCameraInterface& camera, int width_px, int height_px, const structures::WorldBox& box, float& left, float& top, float& right, float& bottom)
+bool projectBox(const CommonCameraInterface& camera, int width_px, int height_px, const scene::WorldBox& box, float& left, float& top, float& right, float& bottom)
 {
 	for (int i = 0; i < 8; i++)
 	{

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "SteppedScene.h"
+#include "scene/SteppedScene.h"
 #include "TextLines.h"
 
 struct CommonCameraInterface;
@@ -66,7 +66,7 @@ struct SceneFraming
 // The reserved size of a ledger and the margin kept around the envelope.
 struct FramingRequest
 {
-	structures::WorldBox envelope;
+	scene::WorldBox envelope;
 	float yaw_deg = 180;  // from +z: the scenes are built in the x-y plane
 	float pitch_deg = 0;
 	int ledger_lines = 12;
@@ -81,4 +81,4 @@ SceneFraming frameScene(const FramingRequest& request, int width_px, int height_
 // A world point's window pixel (x right, y down) through a camera's view and projection matrices; false behind it.
 bool projectToWindow(const CommonCameraInterface& camera, int width_px, int height_px, const btVector3& p, float& x_px, float& y_px);
 // The window rectangle a box's eight corners cover; false if one is behind the camera.
-bool projectBox(const CommonCameraInterface& camera, int width_px, int height_px, const structures::WorldBox& box, float& left, float& top, float& right, float& bottom);
+bool projectBox(const CommonCameraInterface& camera, int width_px, int height_px, const scene::WorldBox& box, float& left, float& top, float& right, float& bottom);

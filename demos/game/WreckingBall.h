@@ -12,7 +12,7 @@
 
 #include "plastic/JointFactory.h"
 #include "plastic/SolverSettings.h"
-#include "SteppedScene.h"
+#include "scene/SteppedScene.h"
 
 namespace game
 {
@@ -109,7 +109,7 @@ struct WreckingBallResult
 };
 
 // The scene, one 60 Hz frame per step() (each frame: the solver settings' internal steps).
-class WreckingBallScene : public structures::SteppedScene
+class WreckingBallScene : public scene::SteppedScene
 {
 public:
 	explicit WreckingBallScene(const WreckingBallParameters& p);  // throws std::invalid_argument naming a bad parameter
@@ -118,9 +118,9 @@ public:
 	bool done() const override;
 	double time_s() const override;
 	btDiscreteDynamicsWorld& world() override;
-	std::vector<structures::JointView> joints() const override;
-	structures::SceneLedger ledger() const override;
-	structures::WorldBox viewEnvelope() const override;
+	std::vector<scene::JointView> joints() const override;
+	scene::SceneLedger ledger() const override;
+	scene::WorldBox viewEnvelope() const override;
 	WreckingBallResult result() const;  // measured now
 	const btRigidBody& ball() const;
 	std::vector<const btRigidBody*> frameBodies() const;

@@ -21,9 +21,9 @@ WreckingBallParameters wreckingBallFromSliders(const std::vector<float>& v, plas
 	return p;
 }
 
-structures::ControlledScene wreckingBallControls()
+scene::ControlledScene wreckingBallControls()
 {
-	structures::ControlledScene c;
+	scene::ControlledScene c;
 	c.name = "wrecking ball";
 	c.sliders = {{"release angle (rad)", 0, 1.5f, false, 1.0f},
 				 {"ball mass (kg)", 100, 10000, false, 2000},
@@ -33,7 +33,7 @@ structures::ControlledScene wreckingBallControls()
 				 {"impact height (m)", 0.6f, 3, false, 1.5f},
 				 {"direct solver (1) or upstream SI (0)", 0, 1, true, 1},
 				 {"solver iterations", 1, 100, true, 10}};
-	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<structures::SteppedScene>
+	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<scene::SteppedScene>
 	{ return std::make_unique<WreckingBallScene>(wreckingBallFromSliders(v, m)); };
 	// from +z, a little above: the frame in its plane, the ball coming from the left
 	c.camera_pitch_deg = -8;
@@ -50,13 +50,13 @@ WreckingBallParameters buildingFromSliders(const std::vector<float>& v, plastic:
 	return p;
 }
 
-structures::ControlledScene buildingControls()
+scene::ControlledScene buildingControls()
 {
-	structures::ControlledScene c = wreckingBallControls();
+	scene::ControlledScene c = wreckingBallControls();
 	c.name = "building";
 	c.sliders.push_back({"storeys", 1, 10, true, 5});
 	c.sliders.push_back({"bays", 1, 8, true, 4});
-	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<structures::SteppedScene>
+	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<scene::SteppedScene>
 	{ return std::make_unique<WreckingBallScene>(buildingFromSliders(v, m)); };
 	// the wrecking ball's view direction (from +z, a little above)
 	return c;

@@ -3,14 +3,14 @@
 
 #include <vector>
 
-#include "SceneControls.h"
+#include "scene/ControlledScene.h"
 #include "WreckingBall.h"
 
 namespace game
 {
 WreckingBallParameters wreckingBallFromSliders(const std::vector<float>& values, plastic::JointMethod method);
-structures::ControlledScene wreckingBallControls();
+scene::ControlledScene wreckingBallControls();
 // The same scene with a building: the wrecking ball's sliders, then storeys and bays (default 5 and 4: 200 joints)
 WreckingBallParameters buildingFromSliders(const std::vector<float>& values, plastic::JointMethod method);
-structures::ControlledScene buildingControls();
+scene::ControlledScene buildingControls();
 }  // namespace game

@@ -1,13 +1,13 @@
 #include <cmath>
 
 #include "plastic/Section.h"
-#include "StructureRig.h"
+#include "scene/StructureRig.h"
 #include "WreckingBall.h"
 
 namespace game
 {
-using structures::requireRange;
-using structures::requireWhole;
+using scene::requireRange;
+using scene::requireWhole;
 
 plastic::WorldSolverSettings wreckingBallSolverSettings()
 {
@@ -17,31 +17,31 @@ plastic::WorldSolverSettings wreckingBallSolverSettings()
 std::vector<std::string> validateWreckingBallParameters(const WreckingBallParameters& p)
 {
 	std::vector<std::string> e = plastic::validate(p.solver, "internal-step");
-	requireRange(e, "frame-rate", p.frame_rate_hz, 1, 1000, "Hz");
-	requireRange(e, "duration", p.duration_s, 0.01, 600, "s");
-	requireRange(e, "gravity", p.gravity_m_s2, 0.1, 100, "m/s2");
-	requireWhole(e, "storeys", p.storeys, 1, 20);
-	requireWhole(e, "bays", p.bays, 1, 20);
-	requireRange(e, "span", p.span_m, 0.5, 100, "m");
-	requireRange(e, "height", p.height_m, 0.5, 100, "m");
-	requireWhole(e, "column-segments", p.column_segments, 1, 64);
-	requireWhole(e, "beam-segments", p.beam_segments, 1, 64);
-	requireRange(e, "section-depth", p.section_depth_m, 0.01, 2, "m");
-	requireRange(e, "flange-width", p.flange_width_m, 0.01, 2, "m");
-	requireRange(e, "web-thickness", p.web_thickness_m, 1e-4, p.flange_width_m, "m");
-	requireRange(e, "flange-thickness", p.flange_thickness_m, 1e-4, 0.49 * p.section_depth_m, "m");
-	requireRange(e, "fy", p.yield_stress_pa, 1e6, 1e10, "Pa");
-	requireRange(e, "youngs-modulus", p.youngs_modulus_pa, 1e6, 1e13, "Pa");
-	requireRange(e, "density", p.density_kg_m3, 1, 1e5, "kg/m3");
-	requireRange(e, "max-plastic-rotation", p.max_plastic_rotation_rad, 1e-3, 100, "rad");
-	requireRange(e, "ball-mass", p.ball_mass_kg, 1, 1e6, "kg");
-	requireRange(e, "ball-radius", p.ball_radius_m, 0.05, 0.45 * p.height_m, "m");
-	requireRange(e, "chain-length", p.chain_length_m, 0.5, 100, "m");
-	requireWhole(e, "chain-links", p.chain_links, 1, 64);
-	requireRange(e, "chain-mass", p.chain_mass_kg, 0.1, 1e5, "kg");
-	requireRange(e, "release-angle", p.release_angle_rad, 0, 1.5, "rad");
-	requireRange(e, "impact-height", p.impact_height_m, p.ball_radius_m + 0.05, p.height_m, "m");
-	requireRange(e, "ball-friction", p.ball_friction, 0, 2, "");
+	scene::requireRange(e, "frame-rate", p.frame_rate_hz, 1, 1000, "Hz");
+	scene::requireRange(e, "duration", p.duration_s, 0.01, 600, "s");
+	scene::requireRange(e, "gravity", p.gravity_m_s2, 0.1, 100, "m/s2");
+	scene::requireWhole(e, "storeys", p.storeys, 1, 20);
+	scene::requireWhole(e, "bays", p.bays, 1, 20);
+	scene::requireRange(e, "span", p.span_m, 0.5, 100, "m");
+	scene::requireRange(e, "height", p.height_m, 0.5, 100, "m");
+	scene::requireWhole(e, "column-segments", p.column_segments, 1, 64);
+	scene::requireWhole(e, "beam-segments", p.beam_segments, 1, 64);
+	scene::requireRange(e, "section-depth", p.section_depth_m, 0.01, 2, "m");
+	scene::requireRange(e, "flange-width", p.flange_width_m, 0.01, 2, "m");
+	scene::requireRange(e, "web-thickness", p.web_thickness_m, 1e-4, p.flange_width_m, "m");
+	scene::requireRange(e, "flange-thickness", p.flange_thickness_m, 1e-4, 0.49 * p.section_depth_m, "m");
+	scene::requireRange(e, "fy", p.yield_stress_pa, 1e6, 1e10, "Pa");
+	scene::requireRange(e, "youngs-modulus", p.youngs_modulus_pa, 1e6, 1e13, "Pa");
+	scene::requireRange(e, "density", p.density_kg_m3, 1, 1e5, "kg/m3");
+	scene::requireRange(e, "max-plastic-rotation", p.max_plastic_rotation_rad, 1e-3, 100, "rad");
+	scene::requireRange(e, "ball-mass", p.ball_mass_kg, 1, 1e6, "kg");
+	scene::requireRange(e, "ball-radius", p.ball_radius_m, 0.05, 0.45 * p.height_m, "m");
+	scene::requireRange(e, "chain-length", p.chain_length_m, 0.5, 100, "m");
+	scene::requireWhole(e, "chain-links", p.chain_links, 1, 64);
+	scene::requireRange(e, "chain-mass", p.chain_mass_kg, 0.1, 1e5, "kg");
+	scene::requireRange(e, "release-angle", p.release_angle_rad, 0, 1.5, "rad");
+	scene::requireRange(e, "impact-height", p.impact_height_m, p.ball_radius_m + 0.05, p.height_m, "m");
+	scene::requireRange(e, "ball-friction", p.ball_friction, 0, 2, "");
 	if (e.empty() && p.duration_s * p.frame_rate_hz > 1e6) e.push_back("duration x frame-rate: more than 1e6 frames");
 	return e;
 }

@@ -10,10 +10,10 @@
 
 #include "plastic/BeamBuilder.h"
 #include "plastic/EnergyLedger.h"
-#include "JointSites.h"
-#include "Measures.h"
+#include "scene/JointSites.h"
+#include "scene/Measures.h"
 #include "Pendulum.h"
-#include "StructureRig.h"
+#include "scene/StructureRig.h"
 #include "WreckingBall.h"
 #include "scene/Errors.h"
 
@@ -77,9 +77,9 @@ struct WreckingBallScene::State
 	std::vector<plastic::Joint> endJoints;
 	std::vector<const plastic::Joint*> joints;  // one storey and bay: along the frame, base-left .. base-right
 	std::vector<std::string> names;
-	std::vector<structures::JointSite> sites;
-	std::vector<std::unique_ptr<structures::PlanarAngle>> bodyAngles;
-	std::vector<std::pair<const structures::PlanarAngle*, const structures::PlanarAngle*>> angles;  // per joint: body a, body b
+	std::vector<scene::JointSite> sites;
+	std::vector<std::unique_ptr<scene::PlanarAngle>> bodyAngles;
+	std::vector<std::pair<const scene::PlanarAngle*, const scene::PlanarAngle*>> angles;  // per joint: body a, body b
 	std::vector<double> measuredAtBreak;                                                            // per joint, the measured rotation when it broke (NaN: not broken)
 	std::vector<double> brokenAt_s;
 	std::unique_ptr<Pendulum> pendulum;  // the ball and its chain
@@ -249,13 +249,13 @@ WreckingBallScene::WreckingBallScene(const WreckingBallParameters& p)
 		for (const btRigidBody* body : {j.a, j.b})
 			if (std::find(bodies.begin(), bodies.end(), body) == bodies.end()) bodies.push_back(body);
 	}
-	for (const btRigidBody* body : bodies) s.bodyAngles.push_back(std::make_unique<structures::PlanarAngle>(body));
+	for (const btRigidBody* body : bodies) s.bodyAngles.push_back(std::make_unique<scene::PlanarAngle>(body));
 	auto angleOf = [&](const btRigidBody* body)
 	{ return s.bodyAngles[size_t(std::find(bodies.begin(), bodies.end(), body) - bodies.begin())].get(); };
 	for (const FrameJoint& j : frame)
 	{
 		s.angles.push_back({angleOf(j.a), angleOf(j.b)});
-		s.sites.push_back(structures::jointSite(*j.joint, j.a, *j.b, j.pivot));
+		s.sites.push_back(scene::jointSite(*j.joint, j.a, *j.b, j.pivot));
 	}
 	for (const plastic::Joint* j : s.joints) s.ledger.addJoint(*j);
 	s.measuredAtBreak.assign(s.joints.size(), std::nan(""));
@@ -359,7 +359,7 @@ WreckingBallResult WreckingBallScene::result() const
 		r.plastic_booked_j += j.booked_work_j;
 		r.plastic_measured_j += j.measured_work_j;
 		if (j.broken) r.broken_joints++;
-		if ((s.joints[i]->plasticState ? j.booked_rotation_rad : std::fabs(j.measured_rotation_rad)) > structures::kYieldedRotation_rad) r.yielded_joints++;
+		if ((s.joints[i]->plasticState ? j.booked_rotation_rad : std::fabs(j.measured_rotation_rad)) > scene::kYieldedRotation_rad) r.yielded_joints++;
 		r.joints.push_back(j);
 	}
 	const plastic::Energies e = s.ledger.measure();
@@ -381,17 +381,17 @@ WreckingBallResult WreckingBallScene::result() const
 	return r;
 }
 
-std::vector<structures::JointView> WreckingBallScene::joints() const
+std::vector<scene::JointView> WreckingBallScene::joints() const
 {
-	std::vector<structures::JointView> views;
-	for (size_t i = 0; i < m->sites.size(); i++) views.push_back(structures::jointView(m->sites[i], m->relativeRotation(i)));
+	std::vector<scene::JointView> views;
+	for (size_t i = 0; i < m->sites.size(); i++) views.push_back(scene::jointView(m->sites[i], m->relativeRotation(i)));
 	return views;
 }
 
-structures::SceneLedger WreckingBallScene::ledger() const
+scene::SceneLedger WreckingBallScene::ledger() const
 {
 	const WreckingBallResult r = result();
-	structures::SceneLedger l;
+	scene::SceneLedger l;
 	l.title = std::string("wrecking ball, ") + plastic::jointMethodName(m->p.method);
 	l.time_s = r.simulated_s;
 	l.load_work_j = r.gravity_work_j;
@@ -424,7 +424,7 @@ WreckingBallResult runWreckingBall(const WreckingBallParameters& p)
 
 namespace game
 {
-structures::WorldBox WreckingBallScene::viewEnvelope() const
+scene::WorldBox WreckingBallScene::viewEnvelope() const
 {
 	// The frame (bays x span by storeys x height on the ground), the ball's swing from its release (left of the frame)
 	// up to the chain's pivot, and the debris: broken members fall over to the right, as far as a storey's height.
@@ -434,7 +434,7 @@ structures::WorldBox WreckingBallScene::viewEnvelope() const
 	const double pivot_y_m = p.impact_height_m + radius_m;
 	const double release_x_m = bottom_x_m - radius_m * std::sin(std::min(p.release_angle_rad, 1.5707963));
 	const double pad_m = p.section_depth_m;
-	structures::WorldBox box;
+	scene::WorldBox box;
 	box.min_m = btVector3(btScalar(release_x_m - p.ball_radius_m - pad_m), 0, btScalar(-p.ball_radius_m - pad_m));
 	box.max_m = btVector3(btScalar(p.span_m * p.bays + p.height_m + pad_m), btScalar(std::max(pivot_y_m, p.height_m * p.storeys) + pad_m),
 						  btScalar(p.ball_radius_m + pad_m));

@@ -9,14 +9,14 @@
 #include <string>
 #include <vector>
 
-#include "SteppedScene.h"
-#include "StructureRig.h"
+#include "scene/SteppedScene.h"
+#include "scene/StructureRig.h"
 
 namespace structures
 {
 struct CantileverParameters
 {
-	SolverSettings solver;
+	scene::SolverSettings solver;
 	double length_m = 2.0;
 	int segments = 4;
 	double section_width_m = 0.05;  // along the bending axis z
@@ -74,7 +74,7 @@ struct CantileverResult
 std::vector<std::string> validateCantileverParameters(const CantileverParameters& p);
 CantileverAnswer cantileverAnswer(const CantileverParameters& p);
 // The scene, built from its parameters, one internal step at a time (the runner and the browser example both use it).
-class CantileverScene : public SteppedScene
+class CantileverScene : public scene::SteppedScene
 {
 public:
 	explicit CantileverScene(const CantileverParameters& p);
@@ -83,9 +83,9 @@ public:
 	bool done() const override;
 	double time_s() const override;
 	btDiscreteDynamicsWorld& world() override;
-	std::vector<JointView> joints() const override;
-	SceneLedger ledger() const override;
-	WorldBox viewEnvelope() const override;
+	std::vector<scene::JointView> joints() const override;
+	scene::SceneLedger ledger() const override;
+	scene::WorldBox viewEnvelope() const override;
 	CantileverResult result() const;  // measured now
 
 private:

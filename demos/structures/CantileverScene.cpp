@@ -10,8 +10,8 @@
 #include "Cantilever.h"
 #include "CollapseTest.h"
 #include "plastic/EnergyLedger.h"
-#include "JointSites.h"
-#include "Measures.h"
+#include "scene/JointSites.h"
+#include "scene/Measures.h"
 #include "scene/Errors.h"
 
 namespace structures
@@ -45,14 +45,14 @@ struct CantileverScene::State
 	CantileverParameters p;
 	std::chrono::steady_clock::time_point start;
 	CantileverAnswer answer;
-	StructureRig rig;
+	scene::StructureRig rig;
 	plastic::Beam beam;
 	// the segment's local z is the member axis: the tip is half a segment out
-	ScaledLoad load;
+	scene::ScaledLoad load;
 	CollapseTest test;
-	std::vector<PlanarAngle> angles;  // the ground, then each segment
+	std::vector<scene::PlanarAngle> angles;  // the ground, then each segment
 	plastic::EnergyLedger ledger;
-	std::vector<JointSite> sites;
+	std::vector<scene::JointSite> sites;
 	bool ramp = false;
 	bool finished = false;
 	bool finite = true;
@@ -74,7 +74,7 @@ CantileverScene::CantileverScene(const CantileverParameters& p) : m(std::make_un
 	for (btRigidBody* b : s.beam.segments()) s.angles.emplace_back(b);
 	for (btRigidBody* b : s.beam.segments()) s.ledger.addBody(*b);
 	for (size_t j = 0; j < s.beam.joints().size(); j++)
-		s.sites.push_back(jointSite(s.beam.joints()[j], j ? s.beam.segments()[j - 1] : nullptr, *s.beam.segments()[j], s.beam.jointSpecs()[j].pivot_m));
+		s.sites.push_back(scene::jointSite(s.beam.joints()[j], j ? s.beam.segments()[j - 1] : nullptr, *s.beam.segments()[j], s.beam.jointSpecs()[j].pivot_m));
 	State* state = m.get();
 	s.rig.beforeEachStep([state](double step_s)
 						 {
@@ -88,7 +88,7 @@ CantileverScene::CantileverScene(const CantileverParameters& p) : m(std::make_un
 	s.rig.afterEachStep([state]
 						{
 		state->load.afterStep();
-		for (PlanarAngle& a : state->angles) a.update(); });
+		for (scene::PlanarAngle& a : state->angles) a.update(); });
 }
 
 CantileverScene::~CantileverScene() = default;
@@ -166,18 +166,18 @@ CantileverResult CantileverScene::result() const
 	return r;
 }
 
-std::vector<JointView> CantileverScene::joints() const
+std::vector<scene::JointView> CantileverScene::joints() const
 {
-	std::vector<JointView> views;
-	for (size_t j = 0; j < m->sites.size(); j++) views.push_back(jointView(m->sites[j], m->jointRotation(j)));
+	std::vector<scene::JointView> views;
+	for (size_t j = 0; j < m->sites.size(); j++) views.push_back(scene::jointView(m->sites[j], m->jointRotation(j)));
 	return views;
 }
 
-SceneLedger CantileverScene::ledger() const
+scene::SceneLedger CantileverScene::ledger() const
 {
 	const CantileverResult r = result();
 	const CantileverParameters& p = m->p;
-	SceneLedger l;
+	scene::SceneLedger l;
 	l.title = std::string("cantilever, ") + plastic::jointMethodName(p.solver.method);
 	l.time_s = r.simulated_s;
 	l.load_work_j = r.load_work_j;
@@ -222,7 +222,7 @@ CantileverResult runCantilever(const CantileverParameters& p)
 
 namespace structures
 {
-WorldBox CantileverScene::viewEnvelope() const
+scene::WorldBox CantileverScene::viewEnvelope() const
 {
 	// The member turns about its root (the origin), the tip down, through the arc its length sweeps: to the analytic
 	// stop of a dead load (and 10 % past it), a little past the collapse under a ramp (held there, the lever shortens as
@@ -237,7 +237,7 @@ WorldBox CantileverScene::viewEnvelope() const
 		turn_rad = std::min(pi, 1.1 * stop_rad + 0.05);
 	const double L = p.length_m;
 	const double pad_m = p.section_depth_m;  // the member's depth, half on each side, and as much again
-	WorldBox box;
+	scene::WorldBox box;
 	box.min_m = btVector3(btScalar(std::min(0.0, L * std::cos(turn_rad)) - pad_m), btScalar(-L * (turn_rad < pi / 2 ? std::sin(turn_rad) : 1.0) - pad_m),
 						  btScalar(-p.section_width_m));
 	box.max_m = btVector3(btScalar(L + pad_m), btScalar(pad_m), btScalar(p.section_width_m));

@@ -1,4 +1,4 @@
-// A quasi-static collapse test, as in a laboratory: the load factor rises (LoadRamp); when a joint runs away
+// A quasi-static collapse test, as in a laboratory: the load factor rises (scene::LoadRamp); when a joint runs away
 // (CollapseDetector) the load is held; if the structure keeps moving until its joints have turned
 // mechanism_rotation_rad since then, it has collapsed at the held factor, otherwise (an elastic-plastic
 // structure that only softened as its hinges formed one by one, or a vibration) the ramp resumes after hold_s.
@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "CollapseDetector.h"
-#include "LoadRamp.h"
+#include "scene/LoadRamp.h"
 
 namespace structures
 {
@@ -40,7 +40,7 @@ public:
 
 private:
 	CollapseTestSettings m_s;
-	LoadRamp m_ramp;
+	scene::LoadRamp m_ramp;
 	CollapseDetector m_detector;
 	double m_heldSince_s = 0;
 	double m_collapseFactor = std::numeric_limits<double>::quiet_NaN();

@@ -12,14 +12,14 @@
 #include <string>
 #include <vector>
 
-#include "SteppedScene.h"
-#include "StructureRig.h"
+#include "scene/SteppedScene.h"
+#include "scene/StructureRig.h"
 
 namespace structures
 {
 struct DropWeightParameters
 {
-	SolverSettings solver;
+	scene::SolverSettings solver;
 	bool clamped = false;
 	double span_m = 2.0;
 	int segments = 2;  // even: a joint at mid-span
@@ -70,7 +70,7 @@ struct DropWeightResult
 std::vector<std::string> validateDropWeightParameters(const DropWeightParameters& p);
 DropWeightAnswer dropWeightAnswer(const DropWeightParameters& p);
 // The scene, built from its parameters, one internal step at a time (the runner and the browser example both use it).
-class DropWeightScene : public SteppedScene
+class DropWeightScene : public scene::SteppedScene
 {
 public:
 	explicit DropWeightScene(const DropWeightParameters& p);
@@ -79,9 +79,9 @@ public:
 	bool done() const override;
 	double time_s() const override;
 	btDiscreteDynamicsWorld& world() override;
-	std::vector<JointView> joints() const override;
-	SceneLedger ledger() const override;
-	WorldBox viewEnvelope() const override;
+	std::vector<scene::JointView> joints() const override;
+	scene::SceneLedger ledger() const override;
+	scene::WorldBox viewEnvelope() const override;
 	DropWeightResult result() const;  // measured now
 	const btRigidBody& ball() const;
 

@@ -5,19 +5,19 @@ namespace structures
 {
 std::vector<std::string> validateDropWeightParameters(const DropWeightParameters& p)
 {
-	std::vector<std::string> e = validateSolverSettings(p.solver);
-	requireRange(e, "span", p.span_m, 0.1, 100, "m");
+	std::vector<std::string> e = scene::validateSolverSettings(p.solver);
+	scene::requireRange(e, "span", p.span_m, 0.1, 100, "m");
 	if (p.segments < 2 || p.segments > 1000 || p.segments % 2)
 		e.push_back("segments: " + std::to_string(p.segments) + " is not an even number in [2, 1000]");
-	requireRange(e, "section-width", p.section_width_m, 1e-4, 10, "m");
-	requireRange(e, "section-depth", p.section_depth_m, 1e-4, 10, "m");
-	requireRange(e, "fy", p.yield_stress_pa, 1e3, 1e11, "Pa");
-	requireRange(e, "youngs-modulus", p.youngs_modulus_pa, 1e3, 1e13, "Pa");
-	requireRange(e, "density", p.density_kg_m3, 1, 1e5, "kg/m3");
-	requireRange(e, "weight-mass", p.weight_mass_kg, 1e-3, 1e7, "kg");
-	requireRange(e, "weight-radius", p.weight_radius_m, 1e-3, 10, "m");
-	requireRange(e, "impact-speed", p.impact_speed_m_s, 1e-3, 1000, "m/s");
-	requireRange(e, "duration", p.duration_s, 1e-3, 1000, "s");
+	scene::requireRange(e, "section-width", p.section_width_m, 1e-4, 10, "m");
+	scene::requireRange(e, "section-depth", p.section_depth_m, 1e-4, 10, "m");
+	scene::requireRange(e, "fy", p.yield_stress_pa, 1e3, 1e11, "Pa");
+	scene::requireRange(e, "youngs-modulus", p.youngs_modulus_pa, 1e3, 1e13, "Pa");
+	scene::requireRange(e, "density", p.density_kg_m3, 1, 1e5, "kg/m3");
+	scene::requireRange(e, "weight-mass", p.weight_mass_kg, 1e-3, 1e7, "kg");
+	scene::requireRange(e, "weight-radius", p.weight_radius_m, 1e-3, 10, "m");
+	scene::requireRange(e, "impact-speed", p.impact_speed_m_s, 1e-3, 1000, "m/s");
+	scene::requireRange(e, "duration", p.duration_s, 1e-3, 1000, "s");
 	if (e.empty() && p.duration_s / p.solver.world.internal_step_s > 1e8) e.push_back("duration / dt: more than 1e8 steps");
 	return e;
 }

@@ -10,8 +10,8 @@
 #include "plastic/BeamBuilder.h"
 #include "DropWeight.h"
 #include "plastic/EnergyLedger.h"
-#include "JointSites.h"
-#include "Measures.h"
+#include "scene/JointSites.h"
+#include "scene/Measures.h"
 #include "scene/Errors.h"
 
 namespace structures
@@ -78,28 +78,28 @@ struct DropWeightScene::State
 	DropWeightParameters p;
 	std::chrono::steady_clock::time_point start;
 	DropWeightAnswer answer;
-	StructureRig rig;
+	scene::StructureRig rig;
 	plastic::Beam beam;
 	btVector3 rightEnd;
 	btBoxShape carriageShape;
 	btSphereShape ballShape;
 	// the right end's carriage: a body of one segment's mass that slides along x only
 	std::unique_ptr<btRigidBody> carriage;
-	std::unique_ptr<BodyInWorld> carriageInWorld;
+	std::unique_ptr<scene::BodyInWorld> carriageInWorld;
 	std::unique_ptr<btGeneric6DofConstraint> slide;
-	std::unique_ptr<ConstraintInWorld> slideInWorld;
+	std::unique_ptr<scene::ConstraintInWorld> slideInWorld;
 	std::unique_ptr<btHingeConstraint> leftPin;
-	std::unique_ptr<ConstraintInWorld> leftPinInWorld;
+	std::unique_ptr<scene::ConstraintInWorld> leftPinInWorld;
 	plastic::JointSpec rightSpec;
 	plastic::Joint rightClamp;
 	std::unique_ptr<btHingeConstraint> rightPin;
-	std::unique_ptr<ConstraintInWorld> rightInWorld;
+	std::unique_ptr<scene::ConstraintInWorld> rightInWorld;
 	std::unique_ptr<btRigidBody> ball;
-	std::unique_ptr<BodyInWorld> ballInWorld;
+	std::unique_ptr<scene::BodyInWorld> ballInWorld;
 	// the bodies along the beam, site i joins body i and i + 1: the left support, the inner joints, the right support
-	std::vector<PlanarAngle> angles;
+	std::vector<scene::PlanarAngle> angles;
 	std::unique_ptr<plastic::EnergyLedger> ledger;
-	std::vector<JointSite> sites;   // the plastic joints
+	std::vector<scene::JointSite> sites;   // the plastic joints
 	std::vector<size_t> siteIndex;  // their sites in angles
 	size_t mid = 0;
 	btVector3 midLocal{0, 0, 0};
@@ -116,20 +116,20 @@ DropWeightScene::DropWeightScene(const DropWeightParameters& p) : m(std::make_un
 	s.carriage = makeBody(segments.front()->getMass(), s.carriageShape, btTransform(btMatrix3x3::getIdentity(), s.rightEnd));
 	s.carriage->setActivationState(DISABLE_DEACTIVATION);
 	s.rig.world().addRigidBody(s.carriage.get(), 0, 0);
-	s.carriageInWorld.reset(new BodyInWorld{s.rig.world(), *s.carriage});  // in place: a temporary would take the body out
+	s.carriageInWorld.reset(new scene::BodyInWorld{s.rig.world(), *s.carriage});  // in place: a temporary would take the body out
 	s.slide = std::make_unique<btGeneric6DofConstraint>(s.rig.ground(), *s.carriage,
 														s.rig.ground().getCenterOfMassTransform().inverse() * btTransform::getIdentity(), btTransform::getIdentity(), true);
 	s.slide->setLinearLowerLimit(btVector3(1, 0, 0));  // lower > upper: free along x
 	s.slide->setLinearUpperLimit(btVector3(-1, 0, 0));
 	s.slide->setAngularLowerLimit(btVector3(0, 0, 0));
 	s.slide->setAngularUpperLimit(btVector3(0, 0, 0));
-	s.slideInWorld = std::make_unique<ConstraintInWorld>(s.rig.world(), *s.slide);
+	s.slideInWorld = std::make_unique<scene::ConstraintInWorld>(s.rig.world(), *s.slide);
 
 	// the supports: pins, or the method's plastic joints (the left one is the beam's first joint)
 	if (!p.clamped)
 	{
 		s.leftPin = pin(s.rig.ground(), *segments.front(), btVector3(0, 0, 0));
-		s.leftPinInWorld = std::make_unique<ConstraintInWorld>(s.rig.world(), *s.leftPin);
+		s.leftPinInWorld = std::make_unique<scene::ConstraintInWorld>(s.rig.world(), *s.leftPin);
 	}
 	s.rightSpec = s.beam.jointSpecs().empty() ? plastic::JointSpec{} : s.beam.jointSpecs().back();
 	s.rightSpec.pivot_m = s.rightEnd;
@@ -137,7 +137,7 @@ DropWeightScene::DropWeightScene(const DropWeightParameters& p) : m(std::make_un
 		s.rightClamp = plastic::makeJoint(scene::requireValid(s.rightSpec), *segments.back(), *s.carriage);
 	else
 		s.rightPin = pin(*segments.back(), *s.carriage, s.rightEnd);
-	s.rightInWorld = std::make_unique<ConstraintInWorld>(s.rig.world(), p.clamped ? *s.rightClamp.constraint : static_cast<btTypedConstraint&>(*s.rightPin));
+	s.rightInWorld = std::make_unique<scene::ConstraintInWorld>(s.rig.world(), p.clamped ? *s.rightClamp.constraint : static_cast<btTypedConstraint&>(*s.rightPin));
 
 	// the ball, just above the middle of the top face
 	btVector3 ballInertia;
@@ -150,7 +150,7 @@ DropWeightScene::DropWeightScene(const DropWeightParameters& p) : m(std::make_un
 	s.ball->setActivationState(DISABLE_DEACTIVATION);
 	s.ball->setLinearVelocity(btVector3(0, btScalar(-p.impact_speed_m_s), 0));
 	s.rig.world().addRigidBody(s.ball.get());
-	s.ballInWorld.reset(new BodyInWorld{s.rig.world(), *s.ball});
+	s.ballInWorld.reset(new scene::BodyInWorld{s.rig.world(), *s.ball});
 	for (btRigidBody* b : segments) b->setFriction(0);
 
 	s.angles.emplace_back(nullptr);
@@ -166,12 +166,12 @@ DropWeightScene::DropWeightScene(const DropWeightParameters& p) : m(std::make_un
 	{
 		const btRigidBody* a = (p.clamped && j == 0) ? nullptr : segments[j + (p.clamped ? 0 : 1) - 1];
 		const btRigidBody& b = *segments[j + (p.clamped ? 0 : 1)];
-		s.sites.push_back(jointSite(s.beam.joints()[j], a, b, s.beam.jointSpecs()[j].pivot_m));
+		s.sites.push_back(scene::jointSite(s.beam.joints()[j], a, b, s.beam.jointSpecs()[j].pivot_m));
 		s.siteIndex.push_back(first + j);
 	}
 	if (p.clamped)
 	{
-		s.sites.push_back(jointSite(s.rightClamp, s.carriage.get(), *segments.back(), s.rightEnd));
+		s.sites.push_back(scene::jointSite(s.rightClamp, s.carriage.get(), *segments.back(), s.rightEnd));
 		s.siteIndex.push_back(s.angles.size() - 2);
 	}
 	s.mid = size_t(p.segments / 2);
@@ -184,7 +184,7 @@ DropWeightScene::DropWeightScene(const DropWeightParameters& p) : m(std::make_un
 		if (state->p.clamped) plastic::updateJointForStep(*state->rightClamp.constraint, state->rightSpec, step_s); });
 	s.rig.afterEachStep([state]
 						{
-		for (PlanarAngle& a : state->angles) a.update(); });
+		for (scene::PlanarAngle& a : state->angles) a.update(); });
 }
 
 DropWeightScene::~DropWeightScene() = default;
@@ -246,18 +246,18 @@ DropWeightResult DropWeightScene::result() const
 	return r;
 }
 
-std::vector<JointView> DropWeightScene::joints() const
+std::vector<scene::JointView> DropWeightScene::joints() const
 {
-	std::vector<JointView> views;
-	for (size_t i = 0; i < m->sites.size(); i++) views.push_back(jointView(m->sites[i], m->site(m->siteIndex[i])));
+	std::vector<scene::JointView> views;
+	for (size_t i = 0; i < m->sites.size(); i++) views.push_back(scene::jointView(m->sites[i], m->site(m->siteIndex[i])));
 	return views;
 }
 
-SceneLedger DropWeightScene::ledger() const
+scene::SceneLedger DropWeightScene::ledger() const
 {
 	const DropWeightResult r = result();
 	const DropWeightAnswer& a = r.answer;
-	SceneLedger l;
+	scene::SceneLedger l;
 	l.title = std::string("drop weight, ") + (m->p.clamped ? "clamped, " : "simply supported, ") + plastic::jointMethodName(m->p.solver.method);
 	l.time_s = r.simulated_s;
 	l.load_work_j = a.initial_kinetic_j;  // the ball's kinetic energy is the load
@@ -288,7 +288,7 @@ DropWeightResult runDropWeight(const DropWeightParameters& p)
 
 namespace structures
 {
-WorldBox DropWeightScene::viewEnvelope() const
+scene::WorldBox DropWeightScene::viewEnvelope() const
 {
 	// The beam (0..L along x), the weight on its top face at mid-span, and the mechanism: the halves turn by the
 	// analytic half rotation (half as much again, for the estimate's error) and the middle goes down L/2 sin of it.
@@ -296,7 +296,7 @@ WorldBox DropWeightScene::viewEnvelope() const
 	const double pi = 3.14159265358979;
 	const double theta_rad = std::min(pi / 2, 1.5 * m->answer.half_rotation_rad + 0.05);
 	const double pad_m = p.section_depth_m;
-	WorldBox box;
+	scene::WorldBox box;
 	box.min_m = btVector3(btScalar(-pad_m), btScalar(-p.span_m / 2 * std::sin(theta_rad) - pad_m), btScalar(-p.section_width_m));
 	box.max_m = btVector3(btScalar(p.span_m + pad_m), btScalar(pad_m + 2 * p.weight_radius_m), btScalar(p.section_width_m));
 	return box;

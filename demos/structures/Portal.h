@@ -10,14 +10,14 @@
 #include <string>
 #include <vector>
 
-#include "SteppedScene.h"
-#include "StructureRig.h"
+#include "scene/SteppedScene.h"
+#include "scene/StructureRig.h"
 
 namespace structures
 {
 struct PortalParameters
 {
-	SolverSettings solver;
+	scene::SolverSettings solver;
 	double span_m = 4.0;
 	double height_m = 3.0;
 	int column_segments = 2;  // the joints between them are the mid-column hinge sites
@@ -92,7 +92,7 @@ struct PortalResult
 std::vector<std::string> validatePortalParameters(const PortalParameters& p);
 PortalAnswer portalAnswer(const PortalParameters& p);
 // The scene, built from its parameters, one internal step at a time (the runner and the browser example both use it).
-class PortalScene : public SteppedScene
+class PortalScene : public scene::SteppedScene
 {
 public:
 	explicit PortalScene(const PortalParameters& p);
@@ -101,9 +101,9 @@ public:
 	bool done() const override;
 	double time_s() const override;
 	btDiscreteDynamicsWorld& world() override;
-	std::vector<JointView> joints() const override;
-	SceneLedger ledger() const override;
-	WorldBox viewEnvelope() const override;
+	std::vector<scene::JointView> joints() const override;
+	scene::SceneLedger ledger() const override;
+	scene::WorldBox viewEnvelope() const override;
 	PortalResult result() const;  // measured now
 
 private:

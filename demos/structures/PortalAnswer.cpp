@@ -12,29 +12,29 @@ namespace structures
 {
 std::vector<std::string> validatePortalParameters(const PortalParameters& p)
 {
-	std::vector<std::string> e = validateSolverSettings(p.solver);
-	requireRange(e, "span", p.span_m, 0.1, 100, "m");
-	requireRange(e, "height", p.height_m, 0.1, 100, "m");
-	requireWhole(e, "column-segments", p.column_segments, 1, 100);
+	std::vector<std::string> e = scene::validateSolverSettings(p.solver);
+	scene::requireRange(e, "span", p.span_m, 0.1, 100, "m");
+	scene::requireRange(e, "height", p.height_m, 0.1, 100, "m");
+	scene::requireWhole(e, "column-segments", p.column_segments, 1, 100);
 	if (p.beam_segments < 2 || p.beam_segments > 100 || p.beam_segments % 2)
 		e.push_back("beam-segments: " + std::to_string(p.beam_segments) + " is not an even number in [2, 100]");
-	requireRange(e, "section-width", p.section_width_m, 1e-4, 10, "m");
-	requireRange(e, "section-depth", p.section_depth_m, 1e-4, 10, "m");
-	requireRange(e, "fy", p.yield_stress_pa, 1e3, 1e11, "Pa");
-	requireRange(e, "youngs-modulus", p.youngs_modulus_pa, 1e3, 1e13, "Pa");
-	requireRange(e, "density", p.density_kg_m3, 1, 1e5, "kg/m3");
-	requireRange(e, "horizontal-load", p.horizontal_load_n, 0, 1e12, "N");
-	requireRange(e, "vertical-load", p.vertical_load_n, 0, 1e12, "N");
+	scene::requireRange(e, "section-width", p.section_width_m, 1e-4, 10, "m");
+	scene::requireRange(e, "section-depth", p.section_depth_m, 1e-4, 10, "m");
+	scene::requireRange(e, "fy", p.yield_stress_pa, 1e3, 1e11, "Pa");
+	scene::requireRange(e, "youngs-modulus", p.youngs_modulus_pa, 1e3, 1e13, "Pa");
+	scene::requireRange(e, "density", p.density_kg_m3, 1, 1e5, "kg/m3");
+	scene::requireRange(e, "horizontal-load", p.horizontal_load_n, 0, 1e12, "N");
+	scene::requireRange(e, "vertical-load", p.vertical_load_n, 0, 1e12, "N");
 	if (e.empty() && p.horizontal_load_n + p.vertical_load_n <= 0) e.push_back("horizontal-load, vertical-load: one of them must be > 0 N");
-	requireRange(e, "ramp-rate", p.ramp_rate_per_s, 0, 100, "1/s (0 = constant --load-factor)");
-	requireRange(e, "load-factor", p.load_factor, 0, 1000, "");
-	requireRange(e, "fast-ramp-rate", p.fast_ramp_rate_per_s, 1e-6, 1000, "1/s");
-	requireRange(e, "slow-from", p.slow_from_fraction, 0, 1, "(of the plastic-analysis collapse factor)");
-	requireRange(e, "collapse-rate", p.collapse_rate_rad_s, 1e-6, 100, "rad/s");
-	requireRange(e, "rate-window", p.rate_window_s, 1e-3, 10, "s");
-	requireRange(e, "mechanism-rotation", p.mechanism_rotation_rad, 1e-4, 3, "rad");
-	requireRange(e, "hold", p.hold_s, 1e-3, 100, "s");
-	requireRange(e, "duration", p.duration_s, 1e-3, 10000, "s");
+	scene::requireRange(e, "ramp-rate", p.ramp_rate_per_s, 0, 100, "1/s (0 = constant --load-factor)");
+	scene::requireRange(e, "load-factor", p.load_factor, 0, 1000, "");
+	scene::requireRange(e, "fast-ramp-rate", p.fast_ramp_rate_per_s, 1e-6, 1000, "1/s");
+	scene::requireRange(e, "slow-from", p.slow_from_fraction, 0, 1, "(of the plastic-analysis collapse factor)");
+	scene::requireRange(e, "collapse-rate", p.collapse_rate_rad_s, 1e-6, 100, "rad/s");
+	scene::requireRange(e, "rate-window", p.rate_window_s, 1e-3, 10, "s");
+	scene::requireRange(e, "mechanism-rotation", p.mechanism_rotation_rad, 1e-4, 3, "rad");
+	scene::requireRange(e, "hold", p.hold_s, 1e-3, 100, "s");
+	scene::requireRange(e, "duration", p.duration_s, 1e-3, 10000, "s");
 	if (e.empty() && p.duration_s / p.solver.world.internal_step_s > 1e8) e.push_back("duration / dt: more than 1e8 steps");
 	return e;
 }

@@ -11,8 +11,8 @@
 #include "plastic/BeamBuilder.h"
 #include "CollapseTest.h"
 #include "plastic/EnergyLedger.h"
-#include "JointSites.h"
-#include "Measures.h"
+#include "scene/JointSites.h"
+#include "scene/Measures.h"
 #include "Portal.h"
 #include "scene/Errors.h"
 
@@ -83,19 +83,19 @@ struct PortalScene::State
 	PortalParameters p;
 	std::chrono::steady_clock::time_point start;
 	PortalAnswer answer;
-	StructureRig rig;
+	scene::StructureRig rig;
 	btScalar L, h;
 	plastic::Beam columnLeft, beam, columnRight;
 	plastic::JointSpec baseSpec;
 	plastic::Joint base;
-	ConstraintInWorld baseInWorld;
-	ScaledLoad horizontal, vertical;
+	scene::ConstraintInWorld baseInWorld;
+	scene::ScaledLoad horizontal, vertical;
 	CollapseTest test;
 	plastic::EnergyLedger ledger;
 	std::vector<const btRigidBody*> path;  // the bodies in order along the frame, the ground at both ends
-	std::vector<PlanarAngle> angles;
+	std::vector<scene::PlanarAngle> angles;
 	std::vector<const plastic::Joint*> joints;  // site i joins body i and body i + 1
-	std::vector<JointSite> sites;
+	std::vector<scene::JointSite> sites;
 	bool finished = false;
 	bool finite = true;
 	bool ramp = true;               // ramp the load factor (collapse test) or hold it at p.load_factor
@@ -130,7 +130,7 @@ PortalScene::PortalScene(const PortalParameters& p) : m(std::make_unique<State>(
 		const btRigidBody* a = s.path[i];
 		const btRigidBody* b = s.path[i + 1] ? s.path[i + 1] : s.path[i];
 		if (!s.path[i + 1]) a = nullptr;
-		s.sites.push_back(jointSite(*s.joints[i], a, *b, pivots[i]));
+		s.sites.push_back(scene::jointSite(*s.joints[i], a, *b, pivots[i]));
 	}
 	for (size_t i = 1; i + 1 < s.path.size(); i++) s.ledger.addBody(*s.path[i]);
 	s.ramp = p.ramp_rate_per_s > 0;
@@ -138,7 +138,7 @@ PortalScene::PortalScene(const PortalParameters& p) : m(std::make_unique<State>(
 	s.rig.beforeEachStep([state](double step_s)
 						 {
 		if (state->ramp) state->test.advance(step_s);
-		for (ScaledLoad* load : {&state->horizontal, &state->vertical})
+		for (scene::ScaledLoad* load : {&state->horizontal, &state->vertical})
 		{
 			load->setFactor(state->ramp ? state->test.factor() : state->p.load_factor);
 			load->apply();
@@ -151,7 +151,7 @@ PortalScene::PortalScene(const PortalParameters& p) : m(std::make_unique<State>(
 						{
 		state->horizontal.afterStep();
 		state->vertical.afterStep();
-		for (PlanarAngle& a : state->angles) a.update(); });
+		for (scene::PlanarAngle& a : state->angles) a.update(); });
 }
 
 PortalScene::~PortalScene() = default;
@@ -207,19 +207,19 @@ PortalResult PortalScene::result() const
 	return r;
 }
 
-std::vector<JointView> PortalScene::joints() const
+std::vector<scene::JointView> PortalScene::joints() const
 {
 	const std::vector<double> rotations = m->rotations();
-	std::vector<JointView> views;
-	for (size_t i = 0; i < m->sites.size(); i++) views.push_back(jointView(m->sites[i], rotations[i]));
+	std::vector<scene::JointView> views;
+	for (size_t i = 0; i < m->sites.size(); i++) views.push_back(scene::jointView(m->sites[i], rotations[i]));
 	return views;
 }
 
-SceneLedger PortalScene::ledger() const
+scene::SceneLedger PortalScene::ledger() const
 {
 	const PortalResult r = result();
 	const PortalAnswer& a = r.answer;
-	SceneLedger l;
+	scene::SceneLedger l;
 	l.title = std::string("portal frame, ") + plastic::jointMethodName(m->p.solver.method);
 	l.time_s = r.simulated_s;
 	l.load_work_j = r.load_work_j;
@@ -252,14 +252,14 @@ PortalResult runPortal(const PortalParameters& p)
 
 namespace structures
 {
-WorldBox PortalScene::viewEnvelope() const
+scene::WorldBox PortalScene::viewEnvelope() const
 {
 	// The frame (columns 0..h at x = 0 and L, the beam at h) and its mechanism: the columns sway and the beam sags by
 	// turns of a few mechanism rotations (the run holds the load once the collapse is seen and stops soon after).
 	const PortalParameters& p = m->p;
 	const double turn_rad = std::max(0.2, 4 * p.mechanism_rotation_rad);
 	const double pad_m = p.section_depth_m;
-	WorldBox box;
+	scene::WorldBox box;
 	box.min_m = btVector3(btScalar(-turn_rad * p.height_m - pad_m), btScalar(-pad_m), btScalar(-p.section_width_m));
 	box.max_m = btVector3(btScalar(p.span_m + turn_rad * p.height_m + pad_m), btScalar(p.height_m + pad_m), btScalar(p.section_width_m));
 	return box;

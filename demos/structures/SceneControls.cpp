@@ -21,7 +21,7 @@ void requireCount(const std::vector<float>& values, size_t n, const char* scene)
 }
 
 // the solver sliders every structure example ends with: internal step (ms) and iterations
-void solverFrom(const std::vector<float>& v, size_t at, SolverSettings& s, plastic::JointMethod method)
+void solverFrom(const std::vector<float>& v, size_t at, scene::SolverSettings& s, plastic::JointMethod method)
 {
 	s.method = method;
 	s.world.internal_step_s = double(v[at]) * 1e-3;
@@ -29,16 +29,9 @@ void solverFrom(const std::vector<float>& v, size_t at, SolverSettings& s, plast
 }
 
 // the runner's defaults: the toolkit's game settings (four internal steps per 60 Hz frame, 10 iterations)
-const SliderSpec kStep = {"internal step (ms)", 0.1f, 16.7f, false, float(1000.0 / 240.0)};
-const SliderSpec kIterations = {"solver iterations", 1, 1000, true, 10};
+const scene::SliderSpec kStep = {"internal step (ms)", 0.1f, 16.7f, false, float(1000.0 / 240.0)};
+const scene::SliderSpec kIterations = {"solver iterations", 1, 1000, true, 10};
 }  // namespace
-
-std::vector<float> initialValues(const ControlledScene& scene)
-{
-	std::vector<float> v;
-	for (const SliderSpec& s : scene.sliders) v.push_back(s.initial);
-	return v;
-}
 
 CantileverParameters cantileverFromSliders(const std::vector<float>& v, plastic::JointMethod method)
 {
@@ -81,9 +74,9 @@ DropWeightParameters dropWeightFromSliders(const std::vector<float>& v, plastic:
 	return p;
 }
 
-ControlledScene cantileverControls()
+scene::ControlledScene cantileverControls()
 {
-	ControlledScene c;
+	scene::ControlledScene c;
 	c.name = "cantilever";
 	c.sliders = {{"tip load P L / Mp", 0, 3, false, 1.5f},
 				 {"segments", 1, 8, true, 4},
@@ -93,7 +86,7 @@ ControlledScene cantileverControls()
 				 {"follower load (0/1)", 0, 1, true, 0},
 				 kStep,
 				 kIterations};
-	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<SteppedScene>
+	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<scene::SteppedScene>
 	{
 		const CantileverParameters p = cantileverFromSliders(v, m);
 		requireValid(validateCantileverParameters(p));
@@ -104,9 +97,9 @@ ControlledScene cantileverControls()
 	return c;
 }
 
-ControlledScene portalControls()
+scene::ControlledScene portalControls()
 {
-	ControlledScene c;
+	scene::ControlledScene c;
 	c.name = "portal frame";
 	c.sliders = {{"horizontal load H (kN) at factor 1", 0, 200, false, 50},
 				 {"vertical load V (kN) at factor 1", 0, 200, false, 75},
@@ -115,7 +108,7 @@ ControlledScene portalControls()
 				 {"load factor ramp (1/s)", 0.005f, 0.2f, false, 0.02f},
 				 kStep,
 				 kIterations};
-	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<SteppedScene>
+	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<scene::SteppedScene>
 	{
 		const PortalParameters p = portalFromSliders(v, m);
 		requireValid(validatePortalParameters(p));
@@ -127,9 +120,9 @@ ControlledScene portalControls()
 	return c;
 }
 
-ControlledScene dropWeightControls()
+scene::ControlledScene dropWeightControls()
 {
-	ControlledScene c;
+	scene::ControlledScene c;
 	c.name = "drop weight";
 	c.sliders = {{"weight mass (kg)", 10, 5000, false, 1000},
 				 {"impact speed (m/s)", 0.5f, 20, false, 4.5f},
@@ -139,7 +132,7 @@ ControlledScene dropWeightControls()
 				 {"section depth (mm)", 20, 300, false, 100},
 				 kStep,
 				 kIterations};
-	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<SteppedScene>
+	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<scene::SteppedScene>
 	{
 		const DropWeightParameters p = dropWeightFromSliders(v, m);
 		requireValid(validateDropWeightParameters(p));

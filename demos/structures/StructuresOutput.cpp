@@ -47,7 +47,7 @@ private:
 	std::string m_text;
 };
 
-Json solverJson(const char* scene, const SolverSettings& s)
+Json solverJson(const char* scene, const scene::SolverSettings& s)
 {
 	Json j;
 	j.add("scene", std::string(scene)).add("method", std::string(plastic::jointMethodName(s.method))).add("solver", std::string(plastic::solverKindName(s.world.solver))).add("dt", s.world.internal_step_s).add("iterations", long(s.world.iterations)).add("erp", s.world.erp);

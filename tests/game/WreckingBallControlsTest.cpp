@@ -7,7 +7,7 @@ using namespace game;
 // The example starts where the runner does: the same parameters, so the same scene.
 TEST(WreckingBallControls, StartAtTheRunnersDefaults)
 {
-	const WreckingBallParameters p = wreckingBallFromSliders(structures::initialValues(wreckingBallControls()), plastic::JointMethod::PlasticHinge);
+	const WreckingBallParameters p = wreckingBallFromSliders(scene::initialValues(wreckingBallControls()), plastic::JointMethod::PlasticHinge);
 	const WreckingBallParameters d;
 	EXPECT_FLOAT_EQ(float(p.release_angle_rad), float(d.release_angle_rad));
 	EXPECT_EQ(p.ball_mass_kg, d.ball_mass_kg);
@@ -21,11 +21,11 @@ TEST(WreckingBallControls, StartAtTheRunnersDefaults)
 
 TEST(WreckingBallControls, EverySliderRangeBuilds)
 {
-	const structures::ControlledScene scene = wreckingBallControls();
+	const scene::ControlledScene scene = wreckingBallControls();
 	for (size_t i = 0; i < scene.sliders.size(); i++)
 		for (float v : {scene.sliders[i].min, scene.sliders[i].max})
 		{
-			std::vector<float> values = structures::initialValues(scene);
+			std::vector<float> values = scene::initialValues(scene);
 			values[i] = v;
 			EXPECT_NO_THROW(scene.build(values, plastic::JointMethod::PlasticHinge)) << scene.sliders[i].label << " = " << v;
 		}
@@ -35,8 +35,8 @@ TEST(WreckingBallControls, EverySliderRangeBuilds)
 // every slider's range builds.
 TEST(BuildingControls, StartAtFiveStoreysAndFourBaysAndEveryRangeBuilds)
 {
-	const structures::ControlledScene scene = buildingControls();
-	const std::vector<float> start = structures::initialValues(scene);
+	const scene::ControlledScene scene = buildingControls();
+	const std::vector<float> start = scene::initialValues(scene);
 	const WreckingBallParameters p = buildingFromSliders(start, plastic::JointMethod::PlasticHinge);
 	const WreckingBallParameters d;
 	EXPECT_EQ(p.storeys, 5);

@@ -166,7 +166,7 @@ RunResult runExample(const ExampleCase& c, WindowSize size, bool old_camera)
 		Bounds frameBounds;
 		for (const btCollisionObject* o : structureBodies(*gui.world))
 		{
-			structures::WorldBox box;
+			scene::WorldBox box;
 			o->getCollisionShape()->getAabb(o->getWorldTransform(), box.min_m, box.max_m);
 			float left = 0, top = 0, right = 0, bottom = 0;
 			if (!projectBox(*camera, size.width, size.height, box, left, top, right, bottom))

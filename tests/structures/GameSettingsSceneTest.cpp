@@ -26,9 +26,9 @@ const JointMethod kMethods[] = {JointMethod::HingeMotor, JointMethod::PlasticHin
 const SolverKind kSolvers[] = {SolverKind::DirectJoint};
 
 // the toolkit's defaults: btDirectJointSolver, 10 iterations, 1/240 s
-SolverSettings game(JointMethod method, SolverKind solver = SolverKind::DirectJoint)
+scene::SolverSettings game(JointMethod method, SolverKind solver = SolverKind::DirectJoint)
 {
-	SolverSettings s;
+	scene::SolverSettings s;
 	s.method = method;
 	s.world.solver = solver;
 	EXPECT_EQ(s.world.iterations, 10);
@@ -48,7 +48,7 @@ const PortalCase kPortalCases[] = {
 	{"beam", 50e3 / 3, 87.5e3, 8.0 / 7.0, {"knee-left", "mid-span", "knee-right"}},
 };
 
-PortalParameters portal(const PortalCase& c, const SolverSettings& s)
+PortalParameters portal(const PortalCase& c, const scene::SolverSettings& s)
 {
 	PortalParameters p;
 	p.solver = s;
@@ -181,7 +181,7 @@ TEST(GameSettingsSequentialImpulse, MissesTheTargets)
 // most steps and each falls back to 10 sequential-impulse iterations: it gives far early.
 TEST(GameSettingsDantzigAsUpstream, FallsBackOnTheClosedLoop)
 {
-	SolverSettings s = game(JointMethod::PlasticHinge, SolverKind::MlcpDantzig);
+	scene::SolverSettings s = game(JointMethod::PlasticHinge, SolverKind::MlcpDantzig);
 	const PortalResult r = runPortal(portal(kPortalCases[0], s));
 	EXPECT_GT(r.solver_fallbacks, 100);
 	EXPECT_LT(r.collapse_factor, 0.9);

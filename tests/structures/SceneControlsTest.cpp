@@ -10,7 +10,7 @@ using namespace structures;
 
 TEST(SceneControls, StartAtTheRunnersDefaults)
 {
-	const CantileverParameters c = cantileverFromSliders(initialValues(cantileverControls()), plastic::JointMethod::PlasticHinge);
+	const CantileverParameters c = cantileverFromSliders(scene::initialValues(cantileverControls()), plastic::JointMethod::PlasticHinge);
 	const CantileverParameters cd;
 	EXPECT_EQ(c.load_ratio, cd.load_ratio);
 	EXPECT_EQ(c.segments, cd.segments);
@@ -18,14 +18,14 @@ TEST(SceneControls, StartAtTheRunnersDefaults)
 	EXPECT_NEAR(c.section_depth_m, cd.section_depth_m, 1e-9);
 	EXPECT_EQ(c.yield_stress_pa, cd.yield_stress_pa);
 	EXPECT_EQ(c.follower_load, cd.follower_load);
-	const PortalParameters p = portalFromSliders(initialValues(portalControls()), plastic::JointMethod::PlasticHinge);
+	const PortalParameters p = portalFromSliders(scene::initialValues(portalControls()), plastic::JointMethod::PlasticHinge);
 	const PortalParameters pd;
 	EXPECT_EQ(p.horizontal_load_n, pd.horizontal_load_n);
 	EXPECT_EQ(p.vertical_load_n, pd.vertical_load_n);
 	EXPECT_EQ(p.span_m, pd.span_m);
 	EXPECT_EQ(p.height_m, pd.height_m);
 	EXPECT_NEAR(p.ramp_rate_per_s, pd.ramp_rate_per_s, 1e-9);
-	const DropWeightParameters d = dropWeightFromSliders(initialValues(dropWeightControls()), plastic::JointMethod::ElasticPlastic2);
+	const DropWeightParameters d = dropWeightFromSliders(scene::initialValues(dropWeightControls()), plastic::JointMethod::ElasticPlastic2);
 	const DropWeightParameters dd;
 	EXPECT_EQ(d.weight_mass_kg, dd.weight_mass_kg);
 	EXPECT_EQ(d.impact_speed_m_s, dd.impact_speed_m_s);
@@ -41,11 +41,11 @@ TEST(SceneControls, StartAtTheRunnersDefaults)
 // Every slider at its minimum and at its maximum still builds a scene (the ranges are inside the parameters' ranges).
 TEST(SceneControls, EverySliderRangeBuilds)
 {
-	for (const ControlledScene& scene : {cantileverControls(), portalControls(), dropWeightControls()})
+	for (const scene::ControlledScene& scene : {cantileverControls(), portalControls(), dropWeightControls()})
 		for (size_t i = 0; i < scene.sliders.size(); i++)
 			for (float v : {scene.sliders[i].min, scene.sliders[i].max})
 			{
-				std::vector<float> values = initialValues(scene);
+				std::vector<float> values = scene::initialValues(scene);
 				values[i] = v;
 				EXPECT_NO_THROW(scene.build(values, plastic::JointMethod::PlasticHinge)) << scene.name << ": " << scene.sliders[i].label << " = " << v;
 			}
@@ -53,8 +53,8 @@ TEST(SceneControls, EverySliderRangeBuilds)
 
 TEST(SceneControls, BadValuesAreNamed)
 {
-	const ControlledScene c = cantileverControls();
-	std::vector<float> values = initialValues(c);
+	const scene::ControlledScene c = cantileverControls();
+	std::vector<float> values = scene::initialValues(c);
 	values[1] = 0;  // segments
 	try
 	{
@@ -72,23 +72,23 @@ TEST(SceneControls, BadValuesAreNamed)
 // ledger shows them.
 TEST(SceneControls, TheExampleSceneIsTheRunnersScene)
 {
-	const ControlledScene c = dropWeightControls();
-	const std::vector<float> values = initialValues(c);
-	std::unique_ptr<SteppedScene> scene = c.build(values, plastic::JointMethod::PlasticHinge);
+	const scene::ControlledScene c = dropWeightControls();
+	const std::vector<float> values = scene::initialValues(c);
+	std::unique_ptr<scene::SteppedScene> scene = c.build(values, plastic::JointMethod::PlasticHinge);
 	while (!scene->done()) scene->step();
 	const DropWeightResult r = runDropWeight(dropWeightFromSliders(values, plastic::JointMethod::PlasticHinge));
-	const SceneLedger l = scene->ledger();
+	const scene::SceneLedger l = scene->ledger();
 	EXPECT_EQ(l.plastic_booked_j, r.booked_plastic_work_j);
 	EXPECT_EQ(l.plastic_measured_j, r.geometric_plastic_work_j);
 	EXPECT_EQ(l.kinetic_j, r.kinetic_end_j);
 	EXPECT_EQ(l.time_s, r.simulated_s);
 	EXPECT_GT(l.plastic_booked_j, 0);
-	const std::string text = ledgerText(l);
+	const std::string text = scene::ledgerText(l);
 	EXPECT_NE(text.find("drop weight, simply supported, plastic-hinge"), std::string::npos) << text;
 	EXPECT_NE(text.find("analytic: after impact"), std::string::npos) << text;
 	// the mid-span joint has yielded, the others not; no joint is broken
 	int yielded = 0;
-	for (const JointView& j : scene->joints())
+	for (const scene::JointView& j : scene->joints())
 	{
 		EXPECT_FALSE(j.broken);
 		yielded += j.yielded;

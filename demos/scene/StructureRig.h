@@ -10,7 +10,7 @@
 #include "plastic/JointFactory.h"
 #include "plastic/SolverSettings.h"
 
-namespace structures
+namespace scene
 {
 // How a scene is solved: the joint method of every plastic joint, and the world's solver settings (solver kind,
 // iterations, internal step, ERP) as the toolkit defines them.
@@ -80,4 +80,4 @@ private:
 	double m_time_s = 0;
 	long m_steps = 0;
 };
-}  // namespace structures
+}  // namespace scene

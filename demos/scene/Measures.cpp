@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace structures
+namespace scene
 {
 PlanarAngle::PlanarAngle(const btRigidBody* body) : m_body(body)
 {
@@ -46,4 +46,4 @@ void ScaledLoad::apply()
 }
 
 void ScaledLoad::afterStep() { m_work_j += double(m_applied_n.dot(point_m() - m_before_m)); }
-}  // namespace structures
+}  // namespace scene

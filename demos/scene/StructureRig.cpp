@@ -3,7 +3,7 @@
 #include <cmath>
 #include <sstream>
 
-namespace structures
+namespace scene
 {
 void requireRange(std::vector<std::string>& errors, const char* name, double value, double low, double high, const char* unit)
 {
@@ -43,4 +43,4 @@ void StructureRig::step()
 	m_time_s += step_s();
 	m_steps++;
 }
-}  // namespace structures
+}  // namespace scene

@@ -5,7 +5,7 @@
 #include "plastic/JointFactory.h"
 #include "SteppedScene.h"
 
-namespace structures
+namespace scene
 {
 struct JointSite
 {
@@ -20,4 +20,4 @@ JointSite jointSite(const plastic::Joint& joint, const btRigidBody* a, const btR
 // the view of a site; measuredRotation_rad (from the bodies) stands in for the booked rotation of a joint without
 // plastic bookkeeping (the hinge-motor stand-in)
 JointView jointView(const JointSite& site, double measuredRotation_rad);
-}  // namespace structures
+}  // namespace scene

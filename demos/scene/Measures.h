@@ -5,7 +5,7 @@
 
 #include "btBulletDynamicsCommon.h"
 
-namespace structures
+namespace scene
 {
 // Rotation (rad, counter-clockwise about +z) of a body since construction; update() after every step keeps it
 // continuous past +-pi. A null body (the ground) never turns.
@@ -48,4 +48,4 @@ private:
 	btVector3 m_applied_n;
 	double m_work_j = 0;
 };
-}  // namespace structures
+}  // namespace scene

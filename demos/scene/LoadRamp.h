@@ -2,7 +2,7 @@
 // rate, until the scene says the structure has collapsed; from then on it is held.
 #pragma once
 
-namespace structures
+namespace scene
 {
 class LoadRamp
 {
@@ -25,4 +25,4 @@ private:
 	double m_factor = 0;
 	bool m_held = false;
 };
-}  // namespace structures
+}  // namespace scene

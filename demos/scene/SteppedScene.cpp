@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-namespace structures
+namespace scene
 {
 std::string ledgerText(const SceneLedger& l)
 {
@@ -17,4 +17,4 @@ std::string ledgerText(const SceneLedger& l)
 	for (const std::string& s : l.status) text += s + "\n";
 	return text;
 }
-}  // namespace structures
+}  // namespace scene

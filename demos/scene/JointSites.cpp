@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace structures
+namespace scene
 {
 JointSite jointSite(const plastic::Joint& joint, const btRigidBody* a, const btRigidBody& b, const btVector3& worldPivot_m)
 {
@@ -27,4 +27,4 @@ JointView jointView(const JointSite& site, double measuredRotation_rad)
 	v.broken = !j.constraint->isEnabled();
 	return v;
 }
-}  // namespace structures
+}  // namespace scene

@@ -8,7 +8,7 @@
 
 #include "btBulletDynamicsCommon.h"
 
-namespace structures
+namespace scene
 {
 // One plastic joint as it is shown: where it is (world pivot), which bodies it joins, how far it has yielded.
 struct JointView
@@ -62,4 +62,4 @@ public:
 	// and the reach of its mechanism): what the examples keep in view. Not the ground slab.
 	virtual WorldBox viewEnvelope() const = 0;
 };
-}  // namespace structures
+}  // namespace scene
