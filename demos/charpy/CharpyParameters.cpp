@@ -1,23 +1,9 @@
 #include "CharpyParameters.h"
+#include "scene/Ranges.h"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
-
-namespace
-{
-void requireRange(std::vector<std::string>& errors, const char* name, double value, double low, double high,
-				  bool lowInclusive, const char* unit)
-{
-	bool ok = std::isfinite(value) && (lowInclusive ? value >= low : value > low) && value <= high;
-	if (!ok)
-	{
-		std::ostringstream out;
-		out << name << ": " << value << " is not in " << (lowInclusive ? "[" : "(") << low << ", " << high << "] " << unit;
-		errors.push_back(out.str());
-	}
-}
-}  // namespace
 
 void applyStandardGeometry(CharpyParameters& p)
 {
@@ -35,66 +21,66 @@ void applyThesisGeometry(CharpyParameters& p)
 std::vector<std::string> validateCharpyParameters(const CharpyParameters& p)
 {
 	std::vector<std::string> errors;
-	requireRange(errors, "density", p.density_kg_m3, 0, 1e5, false, "kg/m3");
-	requireRange(errors, "youngs-modulus", p.youngs_modulus_pa, 0, 1e13, false, "Pa");
-	requireRange(errors, "fy", p.yield_stress_pa, 0, 1e11, false, "Pa");
-	requireRange(errors, "friction", p.friction, 0, 10, true, "");
-	requireRange(errors, "max-plastic-rotation", p.max_plastic_rotation_rad, 0, 1e3, false, "rad");
-	requireRange(errors, "specimen-width", p.specimen_width_m, 1e-4, 1, true, "m");
-	requireRange(errors, "specimen-length", p.specimen_length_m, 1e-3, 10, true, "m");
-	requireRange(errors, "notch-depth", p.notch_depth_m, 0, p.specimen_width_m * 0.9, true, "m (below 0.9 x specimen-width)");
-	requireRange(errors, "specimen-bottom", p.specimen_bottom_y_m, 0, 100, true, "m");
+	scene::requireRangeAbove(errors, "density", p.density_kg_m3, 0, 1e5, "kg/m3");
+	scene::requireRangeAbove(errors, "youngs-modulus", p.youngs_modulus_pa, 0, 1e13, "Pa");
+	scene::requireRangeAbove(errors, "fy", p.yield_stress_pa, 0, 1e11, "Pa");
+	scene::requireRange(errors, "friction", p.friction, 0, 10, "");
+	scene::requireRangeAbove(errors, "max-plastic-rotation", p.max_plastic_rotation_rad, 0, 1e3, "rad");
+	scene::requireRange(errors, "specimen-width", p.specimen_width_m, 1e-4, 1, "m");
+	scene::requireRange(errors, "specimen-length", p.specimen_length_m, 1e-3, 10, "m");
+	scene::requireRange(errors, "notch-depth", p.notch_depth_m, 0, p.specimen_width_m * 0.9, "m (below 0.9 x specimen-width)");
+	scene::requireRange(errors, "specimen-bottom", p.specimen_bottom_y_m, 0, 100, "m");
 	if (p.parts < 2 || p.parts > 64 || p.parts % 2 != 0)
 	{
 		errors.push_back("parts: " + std::to_string(p.parts) + " is not an even number in [2, 64]");
 	}
-	requireRange(errors, "anvil-gap", p.anvil_gap_m, 1e-3, p.specimen_length_m * 0.98, true, "m (below the specimen length)");
-	requireRange(errors, "anvil-width", p.anvil_width_m, 1e-3, 1, true, "m");
-	requireRange(errors, "anvil-radius", p.anvil_radius_m, 0, std::min(p.specimen_width_m, p.anvil_width_m) / 2, true,
-				 "m (0 = sharp; up to min(specimen-width, anvil-width) / 2)");
-	requireRange(errors, "anvil-taper", p.anvil_taper_rad, 0, 0.5, true, "rad (ISO 148-1: 0.192)");
+	scene::requireRange(errors, "anvil-gap", p.anvil_gap_m, 1e-3, p.specimen_length_m * 0.98, "m (below the specimen length)");
+	scene::requireRange(errors, "anvil-width", p.anvil_width_m, 1e-3, 1, "m");
+	scene::requireRange(errors, "anvil-radius", p.anvil_radius_m, 0, std::min(p.specimen_width_m, p.anvil_width_m) / 2,
+						"m (0 = sharp; up to min(specimen-width, anvil-width) / 2)");
+	scene::requireRange(errors, "anvil-taper", p.anvil_taper_rad, 0, 0.5, "rad (ISO 148-1: 0.192)");
 	if (p.anvil_taper_rad > 0 && !(p.anvil_radius_m > 0))
 	{
 		std::ostringstream out;
 		out << "anvil-taper: " << p.anvil_taper_rad << " needs anvil-radius > 0 (the taper leaves the rounded edge)";
 		errors.push_back(out.str());
 	}
-	requireRange(errors, "hammer-mass", p.hammer_mass_kg, 0, 1e5, false, "kg");
-	requireRange(errors, "hammer-length", p.hammer_length_m, 0.01, 10, true, "m");
-	requireRange(errors, "hammer-height", p.hammer_height_m, 0.01, 10, true, "m");
-	requireRange(errors, "hammer-thickness", p.hammer_thickness_m, 0, p.anvil_gap_m * 0.9, true, "m (0 = no hammer; below 0.9 x anvil-gap)");
-	requireRange(errors, "draft", p.hammer_draft_m, 0, 1, true, "m");
-	requireRange(errors, "striker-radius", p.striker_radius_m, 0, p.hammer_thickness_m / 2, true,
-				 "m (0 = flat nose; up to hammer-thickness / 2)");
+	scene::requireRangeAbove(errors, "hammer-mass", p.hammer_mass_kg, 0, 1e5, "kg");
+	scene::requireRange(errors, "hammer-length", p.hammer_length_m, 0.01, 10, "m");
+	scene::requireRange(errors, "hammer-height", p.hammer_height_m, 0.01, 10, "m");
+	scene::requireRange(errors, "hammer-thickness", p.hammer_thickness_m, 0, p.anvil_gap_m * 0.9, "m (0 = no hammer; below 0.9 x anvil-gap)");
+	scene::requireRange(errors, "draft", p.hammer_draft_m, 0, 1, "m");
+	scene::requireRange(errors, "striker-radius", p.striker_radius_m, 0, p.hammer_thickness_m / 2,
+						"m (0 = flat nose; up to hammer-thickness / 2)");
 	if (p.striker_radius_m > 0 && !(p.hammer_draft_m >= 2 * p.striker_radius_m))
 	{
 		std::ostringstream out;
 		out << "draft: " << p.hammer_draft_m << " is not in [2 x striker-radius = " << 2 * p.striker_radius_m << ", 1] m";
 		errors.push_back(out.str());
 	}
-	requireRange(errors, "impact-speed", p.impact_speed_m_s, 0, 100, true, "m/s (0 = from release-angle)");
-	requireRange(errors, "arm-length", p.hammer_arm_length_m, 0.05, 10, true, "m");
-	requireRange(errors, "release-angle", p.release_angle_rad, 0, 3.1, true, "rad");
-	requireRange(errors, "initial-energy", p.initial_energy_j, 0, 1e6, true, "J (0 = use release-angle)");
-	requireRange(errors, "dt", p.dt_s, 1e-7, 0.05, true, "s");
-	requireRange(errors, "auto-dt-coarse", p.auto_dt_coarse_s, 1e-6, 0.05, true, "s");
+	scene::requireRange(errors, "impact-speed", p.impact_speed_m_s, 0, 100, "m/s (0 = from release-angle)");
+	scene::requireRange(errors, "arm-length", p.hammer_arm_length_m, 0.05, 10, "m");
+	scene::requireRange(errors, "release-angle", p.release_angle_rad, 0, 3.1, "rad");
+	scene::requireRange(errors, "initial-energy", p.initial_energy_j, 0, 1e6, "J (0 = use release-angle)");
+	scene::requireRange(errors, "dt", p.dt_s, 1e-7, 0.05, "s");
+	scene::requireRange(errors, "auto-dt-coarse", p.auto_dt_coarse_s, 1e-6, 0.05, "s");
 	if (p.contact_substep_s != 0)
 	{
-		requireRange(errors, "contact-substep", p.contact_substep_s, 1e-7, 0.05, true, "s (or 0 = off)");
+		scene::requireRange(errors, "contact-substep", p.contact_substep_s, 1e-7, 0.05, "s (or 0 = off)");
 	}
 	if (p.solver_iterations < 1 || p.solver_iterations > 10000)
 	{
 		errors.push_back("iterations: " + std::to_string(p.solver_iterations) + " is not in [1, 10000]");
 	}
-	requireRange(errors, "duration", p.duration_s, 0, 100, false, "s");
+	scene::requireRangeAbove(errors, "duration", p.duration_s, 0, 100, "s");
 	if (std::isfinite(p.duration_s) && std::isfinite(p.dt_s) && p.dt_s > 0 && p.duration_s / p.dt_s > 1e7)
 	{
 		std::ostringstream out;
 		out << "duration / dt: " << p.duration_s << " s / " << p.dt_s << " s is more than 1e7 frames";
 		errors.push_back(out.str());
 	}
-	requireRange(errors, "brittle-force", p.brittle_breaking_force_n, 0, 1e12, false, "N");
-	requireRange(errors, "min-steps-per-period", p.min_steps_per_period, 1, 1e6, true, "steps per period");
+	scene::requireRangeAbove(errors, "brittle-force", p.brittle_breaking_force_n, 0, 1e12, "N");
+	scene::requireRange(errors, "min-steps-per-period", p.min_steps_per_period, 1, 1e6, "steps per period");
 	return errors;
 }
 

@@ -5,24 +5,6 @@
 
 namespace scene
 {
-void requireRange(std::vector<std::string>& errors, const char* name, double value, double low, double high, const char* unit)
-{
-	if (!(std::isfinite(value) && value >= low && value <= high))
-	{
-		std::ostringstream out;
-		out << name << ": " << value << " is not in [" << low << ", " << high << "]" << (*unit ? " " : "") << unit;
-		errors.push_back(out.str());
-	}
-}
-
-void requireWhole(std::vector<std::string>& errors, const char* name, int value, int low, int high)
-{
-	if (value < low || value > high)
-	{
-		errors.push_back(std::string(name) + ": " + std::to_string(value) + " is not in [" + std::to_string(low) + ", " + std::to_string(high) + "]");
-	}
-}
-
 std::vector<std::string> validateSolverSettings(const SolverSettings& s)
 {
 	return plastic::validate(s.world, "dt");

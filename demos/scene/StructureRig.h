@@ -9,6 +9,7 @@
 
 #include "plastic/JointFactory.h"
 #include "plastic/SolverSettings.h"
+#include "Ranges.h"
 
 namespace scene
 {
@@ -20,9 +21,6 @@ struct SolverSettings
 	plastic::WorldSolverSettings world;
 };
 
-// "name: value is not in [low, high] unit" into errors when value is outside the range (or not finite)
-void requireRange(std::vector<std::string>& errors, const char* name, double value, double low, double high, const char* unit);
-void requireWhole(std::vector<std::string>& errors, const char* name, int value, int low, int high);
 std::vector<std::string> validateSolverSettings(const SolverSettings& settings);
 
 // Takes a constraint out of the world when it goes out of scope (declare it after what owns the constraint).
