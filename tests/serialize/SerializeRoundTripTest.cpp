@@ -480,6 +480,29 @@ TEST(SerializeFormat, UncappedHingeWritesTheUpstreamStructure)
 	serializer.finishSerialization();
 }
 
+// A constraint's structure as serialize writes it, in a buffer of its own (no file), and the constraint restored from
+// it in the build's precision.
+template <class C>
+std::vector<char> serializeAlone(const C& constraint, const char* expectedName)
+{
+	btDefaultSerializer serializer;
+	std::vector<char> buffer(constraint.calculateSerializeBufferSize());
+	serializer.startSerialization();
+	EXPECT_STREQ(expectedName, constraint.serialize(buffer.data(), &serializer));
+	serializer.finishSerialization();
+	return buffer;
+}
+
+template <class C, class Data>
+void deSerializeAlone(C& constraint, const Data& data)
+{
+#ifdef BT_USE_DOUBLE_PRECISION
+	constraint.deSerializeDouble(data);
+#else
+	constraint.deSerializeFloat(data);
+#endif
+}
+
 // The settings come back whole through btPlasticConstraintSettings::isValid: a hinge's structure with a yield
 // tolerance out of [0, 1) (a damaged file) restores the hinge's cap and booking but keeps its settings, and the same
 // structure undamaged restores them too.
@@ -491,21 +514,13 @@ TEST(SerializeFormat, SettingsOutOfTheirRangeAreNotRestored)
 	saved.setPlasticMoment(btScalar(3));
 	saved.setMaxPlasticRotation(btScalar(0.7));
 	saved.setYieldTolerance(btScalar(0.004));
-	btDefaultSerializer serializer;
-	std::vector<char> buffer(saved.calculateSerializeBufferSize());
-	serializer.startSerialization();
-	ASSERT_STREQ(btPlasticHingeConstraintDataName, saved.serialize(buffer.data(), &serializer));
-	serializer.finishSerialization();
+	std::vector<char> buffer = serializeAlone(saved, btPlasticHingeConstraintDataName);
 	btPlasticHingeConstraintData& data = *reinterpret_cast<btPlasticHingeConstraintData*>(buffer.data());
 	for (bool damaged : {true, false})
 	{
 		data.m_plasticState.m_yieldTolerance = damaged ? 2 : btScalar(0.004);
 		btPlasticHingeConstraint loaded(*body, btVector3(0, 0, 0), btVector3(0, 0, 1));
-#ifdef BT_USE_DOUBLE_PRECISION
-		loaded.deSerializeDouble(data);
-#else
-		loaded.deSerializeFloat(data);
-#endif
+		deSerializeAlone(loaded, data);
 		EXPECT_EQ(btScalar(3), loaded.getPlasticMoment()) << damaged;
 		EXPECT_EQ(damaged ? SIMD_INFINITY : btScalar(0.7), loaded.getMaxPlasticRotation()) << damaged;
 		EXPECT_EQ(damaged ? btPlasticConstraintSettings().m_yieldTolerance : btScalar(0.004), loaded.getYieldTolerance()) << damaged;
@@ -523,11 +538,7 @@ TEST(SerializeFormat, AYieldSurfaceOutOfItsRangeIsNotRestored)
 	saved.setMaxForce(4, 8);
 	saved.setMaxForce(5, 8);
 	saved.setYieldSurface(bt6DofElasticPlastic2Constraint::YIELD_RECTANGLE_BIAXIAL, 5, 4);
-	btDefaultSerializer serializer;
-	std::vector<char> buffer(saved.calculateSerializeBufferSize());
-	serializer.startSerialization();
-	ASSERT_STREQ(bt6DofElasticPlastic2ConstraintDataName, saved.serialize(buffer.data(), &serializer));
-	serializer.finishSerialization();
+	std::vector<char> buffer = serializeAlone(saved, bt6DofElasticPlastic2ConstraintDataName);
 	bt6DofElasticPlastic2ConstraintData& data = *reinterpret_cast<bt6DofElasticPlastic2ConstraintData*>(buffer.data());
 	struct Case
 	{
@@ -546,11 +557,7 @@ TEST(SerializeFormat, AYieldSurfaceOutOfItsRangeIsNotRestored)
 		data.m_surfaceDof[0] = c.dof0;
 		data.m_surfaceDof[1] = c.dof1;
 		bt6DofElasticPlastic2Constraint loaded(*body, btTransform::getIdentity());
-#ifdef BT_USE_DOUBLE_PRECISION
-		loaded.deSerializeDouble(data);
-#else
-		loaded.deSerializeFloat(data);
-#endif
+		deSerializeAlone(loaded, data);
 		const std::string what = std::to_string(c.surface) + " on " + std::to_string(c.dof0) + ", " + std::to_string(c.dof1);
 		EXPECT_EQ(btScalar(8), loaded.getMaxForce(4)) << what;
 		EXPECT_EQ(c.restored ? bt6DofElasticPlastic2Constraint::YIELD_RECTANGLE_BIAXIAL : bt6DofElasticPlastic2Constraint::YIELD_BOX, loaded.getYieldSurface())
