@@ -76,7 +76,7 @@ const char* jointMethodName(JointMethod method)
 	return "?";
 }
 
-// DOFs 3 (moment about y, the main bending) and 4 (about z) as configureElasticPlastic caps them
+// DOFs 2 (the axial force), 3 (moment about y, the main bending) and 4 (about z) as configureElasticPlastic caps them
 static void setYieldSurface(bt6DofElasticPlastic2Constraint& c, const JointSpec& spec)
 {
 	using C = bt6DofElasticPlastic2Constraint;
@@ -89,6 +89,10 @@ static void setYieldSurface(bt6DofElasticPlastic2Constraint& c, const JointSpec&
 			case BiaxialInteraction::ISection: c.setYieldSurface(C::YIELD_LINEAR_QUADRATIC, 4, 3); break;  // weak z, strong y
 			case BiaxialInteraction::None: break;
 		}
+	}
+	if (spec.yield_surface == YieldSurface::BendingAxial && spec.section.axial_interaction == AxialInteraction::Rectangle)
+	{
+		c.setYieldSurface(C::YIELD_LINEAR_QUADRATIC, 3, 2);  // u0 = My / Mp_y, u1 = N / Np
 	}
 }
 
@@ -146,6 +150,11 @@ std::vector<std::string> validate(const JointSpec& spec)
 	{
 		errors.push_back("yield_surface: biaxial needs a section whose interaction is known (rectangle, round bar, tube, I section), not a " +
 						 spec.section.shape);
+	}
+	if (spec.yield_surface == YieldSurface::BendingAxial && spec.section.axial_interaction == AxialInteraction::None)
+	{
+		errors.push_back("yield_surface: bending-axial needs a section whose interaction of moment and axial force is known (rectangle), not a " +
+						 (spec.section.shape.empty() ? std::string("section without a shape") : spec.section.shape));
 	}
 	if (std::string(jointMethodName(spec.method)) == "?")
 	{

@@ -33,7 +33,8 @@ const char* jointMethodName(JointMethod method);
 enum class YieldSurface
 {
 	PerDof,   // each DOF at its own capacity (the default)
-	Biaxial,  // the two bending moments on the section's BiaxialInteraction curve
+	Biaxial,       // the two bending moments on the section's BiaxialInteraction curve
+	BendingAxial,  // the main bending moment (about y) and the axial force on the section's AxialInteraction curve
 };
 
 struct JointSpec

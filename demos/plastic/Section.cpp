@@ -53,6 +53,7 @@ SectionProperties rectangle(double width_m, double depth_m)
 	SectionProperties s;
 	s.shape = "rectangle";
 	s.biaxial_interaction = BiaxialInteraction::Rectangle;
+	s.axial_interaction = AxialInteraction::Rectangle;
 	s.width_m = b;
 	s.depth_m = h;
 	s.area_m2 = b * h;

@@ -22,6 +22,15 @@ enum class BiaxialInteraction
 	ISection,   // uz + uy^2 = 1 (weak axis z, strong axis y; EN 1993-1-1 6.2.9.1 (6) without axial force)
 };
 
+// The fully plastic interaction of the main bending moment (about y, u = My / Mp_y) with the axial force
+// (n = N / Np): the curve on which a bt6DofElasticPlastic2Constraint yields with JointSpec::yield_surface =
+// YieldSurface::BendingAxial.
+enum class AxialInteraction
+{
+	None,       // not known: each yields alone
+	Rectangle,  // u + n^2 = 1 (the stress blocks of a fully plastic rectangle)
+};
+
 struct SectionProperties
 {
 	std::string shape;
@@ -36,6 +45,7 @@ struct SectionProperties
 	double torsion_constant_m4 = 0;      // St Venant J: torsional stiffness G J / L
 	double plastic_torsion_modulus_m3 = 0;  // fully plastic torque = tau_y * this
 	BiaxialInteraction biaxial_interaction = BiaxialInteraction::None;
+	AxialInteraction axial_interaction = AxialInteraction::None;
 	std::string error;  // empty for a valid section; else why the factory refused it (its properties are 0)
 };
 
