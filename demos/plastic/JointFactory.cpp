@@ -76,7 +76,8 @@ const char* jointMethodName(JointMethod method)
 	return "?";
 }
 
-// DOFs 2 (the axial force), 3 (moment about y, the main bending) and 4 (about z) as configureElasticPlastic caps them
+// DOFs 2 (the axial force), 3 (moment about y, the main bending), 4 (about z) and 5 (the torque) as configureElasticPlastic
+// caps them
 static void setYieldSurface(bt6DofElasticPlastic2Constraint& c, const JointSpec& spec)
 {
 	using C = bt6DofElasticPlastic2Constraint;
@@ -93,6 +94,10 @@ static void setYieldSurface(bt6DofElasticPlastic2Constraint& c, const JointSpec&
 	if (spec.yield_surface == YieldSurface::BendingAxial && spec.section.axial_interaction == AxialInteraction::Rectangle)
 	{
 		c.setYieldSurface(C::YIELD_LINEAR_QUADRATIC, 3, 2);  // u0 = My / Mp_y, u1 = N / Np
+	}
+	if (spec.yield_surface == YieldSurface::BendingTorsion && spec.section.torsion_interaction == TorsionInteraction::Circle)
+	{
+		c.setYieldSurface(C::YIELD_CIRCLE, 3, 5);  // u0 = My / Mp_y, u1 = T / Tp
 	}
 }
 
@@ -154,6 +159,11 @@ std::vector<std::string> validate(const JointSpec& spec)
 	if (spec.yield_surface == YieldSurface::BendingAxial && spec.section.axial_interaction == AxialInteraction::None)
 	{
 		errors.push_back("yield_surface: bending-axial needs a section whose interaction of moment and axial force is known (rectangle), not a " +
+						 (spec.section.shape.empty() ? std::string("section without a shape") : spec.section.shape));
+	}
+	if (spec.yield_surface == YieldSurface::BendingTorsion && spec.section.torsion_interaction == TorsionInteraction::None)
+	{
+		errors.push_back("yield_surface: bending-torsion needs a section whose interaction of moment and torque is known (tube, round bar), not a " +
 						 (spec.section.shape.empty() ? std::string("section without a shape") : spec.section.shape));
 	}
 	if (std::string(jointMethodName(spec.method)) == "?")

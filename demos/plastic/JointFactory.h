@@ -34,7 +34,8 @@ enum class YieldSurface
 {
 	PerDof,   // each DOF at its own capacity (the default)
 	Biaxial,       // the two bending moments on the section's BiaxialInteraction curve
-	BendingAxial,  // the main bending moment (about y) and the axial force on the section's AxialInteraction curve
+	BendingAxial,    // the main bending moment (about y) and the axial force on the section's AxialInteraction curve
+	BendingTorsion,  // the main bending moment (about y) and the torque on the section's TorsionInteraction curve
 };
 
 struct JointSpec

@@ -88,6 +88,7 @@ SectionProperties roundBar(double diameter_m)
 	SectionProperties s;
 	s.shape = "round bar";
 	s.biaxial_interaction = BiaxialInteraction::Circle;
+	s.torsion_interaction = TorsionInteraction::Circle;
 	s.width_m = s.depth_m = d;
 	s.area_m2 = M_PI * d * d / 4.0;
 	s.shear_area_m2 = s.area_m2;
@@ -111,6 +112,7 @@ SectionProperties tube(double outer_diameter_m, double wall_m)
 	SectionProperties s;
 	s.shape = "tube";
 	s.biaxial_interaction = BiaxialInteraction::Circle;
+	s.torsion_interaction = TorsionInteraction::Circle;
 	s.width_m = s.depth_m = D;
 	s.area_m2 = M_PI * (D * D - d * d) / 4.0;
 	s.shear_area_m2 = 2.0 * s.area_m2 / M_PI;

@@ -31,6 +31,15 @@ enum class AxialInteraction
 	Rectangle,  // u + n^2 = 1 (the stress blocks of a fully plastic rectangle)
 };
 
+// The fully plastic interaction of the main bending moment (u = My / Mp_y) with the torque (t = T / Tp): the curve on
+// which a bt6DofElasticPlastic2Constraint yields with JointSpec::yield_surface = YieldSurface::BendingTorsion.
+enum class TorsionInteraction
+{
+	None,    // not known: each yields alone
+	Circle,  // u^2 + t^2 = 1: the torque's shear, uniform over a thin wall, leaves the bending sqrt(fy^2 - 3 tau^2)
+			 // (von Mises): exact for a thin tube, a lower bound for a thick tube or a round bar
+};
+
 struct SectionProperties
 {
 	std::string shape;
@@ -46,6 +55,7 @@ struct SectionProperties
 	double plastic_torsion_modulus_m3 = 0;  // fully plastic torque = tau_y * this
 	BiaxialInteraction biaxial_interaction = BiaxialInteraction::None;
 	AxialInteraction axial_interaction = AxialInteraction::None;
+	TorsionInteraction torsion_interaction = TorsionInteraction::None;
 	std::string error;  // empty for a valid section; else why the factory refused it (its properties are 0)
 };
 
