@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "btBulletDynamicsCommon.h"
+#include "plastic/BeamBuilder.h"
 
 struct CantileverRig
 {
@@ -29,3 +30,17 @@ struct CantileverRig
 	}
 	~CantileverRig() { world.removeRigidBody(&support); }
 };
+
+// The tests' member: 2 m of steel in 4 segments along x from the support, its main bending axis z
+inline plastic::BeamSpec cantileverSpec(const plastic::SectionProperties& section, plastic::JointMethod method)
+{
+	plastic::BeamSpec spec;
+	spec.start_m = btVector3(0, 0, 0);
+	spec.end_m = btVector3(2, 0, 0);
+	spec.segments = 4;
+	spec.joint.section = section;
+	spec.joint.material = plastic::steel();
+	spec.bending_axis = btVector3(0, 0, 1);
+	spec.joint.method = method;
+	return spec;
+}

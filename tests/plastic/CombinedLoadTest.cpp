@@ -34,45 +34,81 @@ struct Outcome
 	Energies energies;
 };
 
+const double kStep_s = 1.0 / 240.0;
+
+// The tests' member (cantileverSpec) on the default solver with a side load at its tip's end, and the books of its
+// bodies, joints and that load (N; the main bending plane is x-y).
+struct LoadedCantilever
+{
+	Rig rig;
+	Beam beam;
+	SectionCapacities cap;
+	btRigidBody* root;
+	btRigidBody* tip;
+	btVector3 tipEnd;     // the tip's end, on the member axis (the segment's local z)
+	btVector3 rootStart;  // the root segment's start, at the support's pivot
+	PointLoad tipLoad;
+	EnergyLedger ledger;
+	btQuaternion start;
+
+	LoadedCantilever(const SectionProperties& section, YieldSurface surface, JointMethod method, const btVector3& force_n)
+		: beam(rig.world, withSurface(cantileverSpec(section, method), surface), &rig.support),
+		  cap(capacities(section, steel())),
+		  root(beam.segments().front()),
+		  tip(beam.segments().back()),
+		  tipEnd(0, 0, btScalar(beam.segmentLength_m() / 2)),
+		  rootStart(0, 0, btScalar(-beam.segmentLength_m() / 2)),
+		  tipLoad(*tip, tipEnd, force_n),
+		  ledger(rig.world.getGravity()),
+		  start(root->getOrientation())
+	{
+		EXPECT_TRUE(beam.errors().empty());
+		for (btRigidBody* b : beam.segments()) ledger.addBody(*b);
+		for (const Joint& j : beam.joints()) ledger.addJoint(j);
+		ledger.addLoad(tipLoad);
+	}
+	static BeamSpec withSurface(BeamSpec spec, YieldSurface surface)
+	{
+		spec.joint.yield_surface = surface;
+		return spec;
+	}
+	// one step with the side load (and whatever else the test applied before)
+	void step()
+	{
+		tipLoad.apply();
+		beam.updateForStep(kStep_s);
+		rig.world.stepSimulation(btScalar(kStep_s), 0);
+		tipLoad.afterStep();
+	}
+	btQuaternion rootTurn() const { return root->getOrientation() * start.inverse(); }
+	double innerRotation_rad() const
+	{
+		double inner = 0;
+		for (size_t j = 1; j < beam.joints().size(); j++) inner = std::max(inner, beam.joints()[j].plasticRotation_rad());
+		return inner;
+	}
+};
+
+int steps(double seconds) { return static_cast<int>(std::lround(seconds / kStep_s)); }
+
+// a load across the member's tip (along -y) whose moment at the root is fraction x Mp_y
+btVector3 sideLoad_n(const SectionProperties& section, double fraction)
+{
+	const double P = fraction * capacities(section, steel()).plastic_moment_y_nm / 2.0;
+	return btVector3(0, btScalar(-P), 0);
+}
+
 // tip load: lateralFactor x Mp / L at angle_rad from the main bending plane (-y) toward the other (-z), for a second
 Outcome load(const SectionProperties& section, YieldSurface surface, double lateralFactor, double angle_rad, double seconds = 1.0,
 			 JointMethod method = JointMethod::ElasticPlastic2)
 {
-	Rig rig;
-	BeamSpec spec;
-	spec.start_m = btVector3(0, 0, 0);
-	spec.end_m = btVector3(2, 0, 0);
-	spec.segments = 4;
-	spec.joint.section = section;
-	spec.joint.material = steel();
-	spec.bending_axis = btVector3(0, 0, 1);
-	spec.joint.method = method;
-	spec.joint.yield_surface = surface;
-	Beam beam(rig.world, spec, &rig.support);
-	const SectionCapacities cap = capacities(spec.joint.section, spec.joint.material);
-	const double P = lateralFactor * cap.plastic_moment_y_nm / 2.0;
-	const btVector3 force(0, btScalar(-P * std::cos(angle_rad)), btScalar(-P * std::sin(angle_rad)));
-	btRigidBody* tip = beam.segments().back();
-	// the tip's end, on the member axis (the segment's local z)
-	const btVector3 tipEnd(0, 0, btScalar(beam.segmentLength_m() / 2));
-	PointLoad tipLoad(*tip, tipEnd, force);
-	EnergyLedger ledger(rig.world.getGravity());
-	for (btRigidBody* b : beam.segments()) ledger.addBody(*b);
-	for (const Joint& j : beam.joints()) ledger.addJoint(j);
-	ledger.addLoad(tipLoad);
-	const btQuaternion start = beam.segments().front()->getOrientation();
-	const double step_s = 1.0 / 240.0;
-	for (int i = 0; i < static_cast<int>(std::lround(seconds / step_s)); i++)
-	{
-		tipLoad.apply();
-		beam.updateForStep(step_s);
-		rig.world.stepSimulation(btScalar(step_s), 0);
-		tipLoad.afterStep();
-	}
+	const double P = lateralFactor * capacities(section, steel()).plastic_moment_y_nm / 2.0;
+	LoadedCantilever c(section, surface, method, btVector3(0, btScalar(-P * std::cos(angle_rad)), btScalar(-P * std::sin(angle_rad))));
+	for (int i = 0; i < steps(seconds); i++) c.step();
 	Outcome o;
-	o.rootRotation_rad = double((beam.segments().front()->getOrientation() * start.inverse()).getAngleShortestPath());
-	for (size_t j = 1; j < beam.joints().size(); j++) o.innerRotation_rad = std::max(o.innerRotation_rad, beam.joints()[j].plasticRotation_rad());
-	o.energies = ledger.measure();
+	o.rootRotation_rad = double(c.rootTurn().getAngleShortestPath());
+	o.innerRotation_rad = c.innerRotation_rad();
+	o.energies = c.ledger.measure();
 	return o;
 }
 
@@ -209,53 +245,27 @@ struct AxialOutcome
 
 AxialOutcome loadWithAxialForce(YieldSurface surface, double axialFraction, double momentFraction, double seconds, double untilRotation_rad)
 {
-	Rig rig;
-	BeamSpec spec;
-	spec.start_m = btVector3(0, 0, 0);
-	spec.end_m = btVector3(2, 0, 0);
-	spec.segments = 4;
-	spec.joint.section = rectangle(0.05, 0.10);
-	spec.joint.material = steel();
-	spec.bending_axis = btVector3(0, 0, 1);
-	spec.joint.method = JointMethod::ElasticPlastic2;
-	spec.joint.yield_surface = surface;
-	Beam beam(rig.world, spec, &rig.support);
-	EXPECT_TRUE(beam.errors().empty());
-	const SectionCapacities cap = capacities(spec.joint.section, spec.joint.material);
-	const double N = axialFraction * cap.axial_n;
-	const double P = momentFraction * cap.plastic_moment_y_nm / 2.0;
-	btRigidBody* tip = beam.segments().back();
-	btRigidBody* root = beam.segments().front();
-	const btVector3 tipEnd(0, 0, btScalar(beam.segmentLength_m() / 2));
-	const btVector3 rootStart(0, 0, btScalar(-beam.segmentLength_m() / 2));
-	PointLoad tipLoad(*tip, tipEnd, btVector3(0, btScalar(-P), 0));
+	LoadedCantilever c(rectangle(0.05, 0.10), surface, JointMethod::ElasticPlastic2, sideLoad_n(rectangle(0.05, 0.10), momentFraction));
+	const double N = axialFraction * c.cap.axial_n;
 	double thrustWork_j = 0;
-	EnergyLedger ledger(rig.world.getGravity());
-	for (btRigidBody* b : beam.segments()) ledger.addBody(*b);
-	for (const Joint& j : beam.joints()) ledger.addJoint(j);
-	ledger.addLoad(tipLoad);
-	const btQuaternion start = root->getOrientation();
-	const double step_s = 1.0 / 240.0;
 	AxialOutcome o;
-	for (int i = 0; i < static_cast<int>(std::lround(seconds / step_s)) && o.rootRotation_rad < untilRotation_rad; i++)
+	for (int i = 0; i < steps(seconds) && o.rootRotation_rad < untilRotation_rad; i++)
 	{
-		tipLoad.apply();
-		// the thrust, toward the root along the tip segment
-		const btVector3 thrust = tip->getWorldTransform().getBasis() * btVector3(0, 0, btScalar(-N));
-		tip->applyForce(thrust, tip->getWorldTransform().getBasis() * tipEnd);
-		const btVector3 rootStartBefore = root->getWorldTransform() * rootStart;
-		beam.updateForStep(step_s);
-		rig.world.stepSimulation(btScalar(step_s), 0);
-		tipLoad.afterStep();
-		thrustWork_j += double(thrust.dot(root->getWorldTransform() * rootStart - rootStartBefore));
-		o.rootRotation_rad = double((root->getOrientation() * start.inverse()).getAngleShortestPath());
+		// the thrust, toward the root along the tip segment, and its work: the member turns about its root as one body,
+		// so the thrust's point moves along it as the root's pivot does
+		const btVector3 thrust = c.tip->getWorldTransform().getBasis() * btVector3(0, 0, btScalar(-N));
+		c.tip->applyForce(thrust, c.tip->getWorldTransform().getBasis() * c.tipEnd);
+		const btVector3 rootStartBefore = c.root->getWorldTransform() * c.rootStart;
+		c.step();
+		thrustWork_j += double(thrust.dot(c.root->getWorldTransform() * c.rootStart - rootStartBefore));
+		o.rootRotation_rad = double(c.rootTurn().getAngleShortestPath());
 	}
 	// the support holds the root at the origin: how far the root segment's start has moved in along its own axis
-	const btVector3 startNow = root->getWorldTransform() * rootStart;
-	const btVector3 axisNow = root->getWorldTransform().getBasis() * btVector3(0, 0, 1);
+	const btVector3 startNow = c.root->getWorldTransform() * c.rootStart;
+	const btVector3 axisNow = c.root->getWorldTransform().getBasis() * btVector3(0, 0, 1);
 	o.rootShortening_m = double(-startNow.dot(axisNow));
-	for (size_t j = 1; j < beam.joints().size(); j++) o.innerRotation_rad = std::max(o.innerRotation_rad, beam.joints()[j].plasticRotation_rad());
-	o.energies = ledger.measure();
+	o.innerRotation_rad = c.innerRotation_rad();
+	o.energies = c.ledger.measure();
 	o.energies.load_work_j += thrustWork_j;
 	return o;
 }
@@ -308,52 +318,26 @@ struct TorsionOutcome
 
 TorsionOutcome loadWithTorque(YieldSurface surface, double torqueFraction, double momentFraction, double seconds, double untilRotation_rad)
 {
-	Rig rig;
-	BeamSpec spec;
-	spec.start_m = btVector3(0, 0, 0);
-	spec.end_m = btVector3(2, 0, 0);
-	spec.segments = 4;
-	spec.joint.section = tube(0.1, 0.008);
-	spec.joint.material = steel();
-	spec.bending_axis = btVector3(0, 0, 1);
-	spec.joint.method = JointMethod::ElasticPlastic2;
-	spec.joint.yield_surface = surface;
-	Beam beam(rig.world, spec, &rig.support);
-	EXPECT_TRUE(beam.errors().empty());
-	const SectionCapacities cap = capacities(spec.joint.section, spec.joint.material);
-	const double T = torqueFraction * cap.torque_nm;
-	const double P = momentFraction * cap.plastic_moment_y_nm / 2.0;
-	btRigidBody* tip = beam.segments().back();
-	btRigidBody* root = beam.segments().front();
-	const btVector3 tipEnd(0, 0, btScalar(beam.segmentLength_m() / 2));
-	PointLoad tipLoad(*tip, tipEnd, btVector3(0, btScalar(-P), 0));
+	LoadedCantilever c(tube(0.1, 0.008), surface, JointMethod::ElasticPlastic2, sideLoad_n(tube(0.1, 0.008), momentFraction));
+	const double T = torqueFraction * c.cap.torque_nm;
 	double torqueWork_j = 0;
-	EnergyLedger ledger(rig.world.getGravity());
-	for (btRigidBody* b : beam.segments()) ledger.addBody(*b);
-	for (const Joint& j : beam.joints()) ledger.addJoint(j);
-	ledger.addLoad(tipLoad);
-	const btQuaternion start = root->getOrientation();
-	const double step_s = 1.0 / 240.0;
 	TorsionOutcome o;
-	for (int i = 0; i < static_cast<int>(std::lround(seconds / step_s)); i++)
+	for (int i = 0; i < steps(seconds); i++)
 	{
-		tipLoad.apply();
 		// the torque about the tip segment's axis, and its work over the step (the world turns the tip by its angular
 		// velocity times the step)
-		const btVector3 torque = tip->getWorldTransform().getBasis() * btVector3(0, 0, btScalar(T));
-		tip->applyTorque(torque);
-		beam.updateForStep(step_s);
-		rig.world.stepSimulation(btScalar(step_s), 0);
-		tipLoad.afterStep();
-		torqueWork_j += double(torque.dot(tip->getAngularVelocity())) * step_s;
-		const btQuaternion turn = root->getOrientation() * start.inverse();
+		const btVector3 torque = c.tip->getWorldTransform().getBasis() * btVector3(0, 0, btScalar(T));
+		c.tip->applyTorque(torque);
+		c.step();
+		torqueWork_j += double(torque.dot(c.tip->getAngularVelocity())) * kStep_s;
+		const btQuaternion turn = c.rootTurn();
 		const btVector3 rotation = turn.getAxis() * turn.getAngle();
 		o.rootBending_rad = std::fabs(double(rotation.z()));
 		o.rootTwist_rad = std::fabs(double(rotation.x()));
 		if (o.rootBending_rad > untilRotation_rad) break;
 	}
-	for (size_t j = 1; j < beam.joints().size(); j++) o.innerRotation_rad = std::max(o.innerRotation_rad, beam.joints()[j].plasticRotation_rad());
-	o.energies = ledger.measure();
+	o.innerRotation_rad = c.innerRotation_rad();
+	o.energies = c.ledger.measure();
 	o.energies.load_work_j += torqueWork_j;
 	return o;
 }
