@@ -2,23 +2,6 @@
 
 namespace plastic
 {
-PointLoad::PointLoad(btRigidBody& body, const btVector3& localPoint_m, const btVector3& force_n)
-	: m_body(body), m_localPoint_m(localPoint_m), m_force_n(force_n), m_before_m(body.getWorldTransform() * localPoint_m)
-{
-}
-
-void PointLoad::apply()
-{
-	m_before_m = m_body.getWorldTransform() * m_localPoint_m;
-	m_body.applyForce(m_force_n, m_body.getWorldTransform().getBasis() * m_localPoint_m);
-}
-
-void PointLoad::afterStep()
-{
-	const btVector3 after = m_body.getWorldTransform() * m_localPoint_m;
-	m_work_j += double(m_force_n.dot(after - m_before_m));
-}
-
 Energies EnergyLedger::measure() const
 {
 	Energies e;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "JointFactory.h"
+#include "PointLoad.h"
 
 namespace plastic
 {
@@ -18,24 +19,6 @@ struct Energies
 	double plastic_j = 0;
 	double load_work_j = 0;
 	double mechanical_j() const { return kinetic_j + potential_j + elastic_j; }
-};
-
-// A constant world force (N) at a point fixed in a body (m, body frame): apply() before a step, afterStep()
-// after it adds the force times the displacement of the point to its work.
-class PointLoad
-{
-public:
-	PointLoad(btRigidBody& body, const btVector3& localPoint_m, const btVector3& force_n);
-	void apply();
-	void afterStep();
-	double work_j() const { return m_work_j; }
-
-private:
-	btRigidBody& m_body;
-	btVector3 m_localPoint_m;
-	btVector3 m_force_n;
-	btVector3 m_before_m;
-	double m_work_j = 0;
 };
 
 class EnergyLedger

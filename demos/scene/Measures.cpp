@@ -20,30 +20,4 @@ void PlanarAngle::update()
 	m_angle_rad += delta;
 }
 
-ScaledLoad::ScaledLoad(btRigidBody& body, const btVector3& localPoint_m, const btVector3& referenceForce_n, bool follower)
-	: m_body(body),
-	  m_localPoint_m(localPoint_m),
-	  m_referenceForce_n(referenceForce_n),
-	  m_initialBasis(body.getWorldTransform().getBasis()),
-	  m_follower(follower),
-	  m_before_m(point_m()),
-	  m_applied_n(0, 0, 0)
-{
-}
-
-btVector3 ScaledLoad::force_n() const
-{
-	btVector3 f = m_referenceForce_n * btScalar(m_factor);
-	if (m_follower) f = m_body.getWorldTransform().getBasis() * (m_initialBasis.transpose() * f);
-	return f;
-}
-
-void ScaledLoad::apply()
-{
-	m_before_m = point_m();
-	m_applied_n = force_n();
-	m_body.applyForce(m_applied_n, m_body.getWorldTransform().getBasis() * m_localPoint_m);
-}
-
-void ScaledLoad::afterStep() { m_work_j += double(m_applied_n.dot(point_m() - m_before_m)); }
 }  // namespace scene

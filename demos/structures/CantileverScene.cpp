@@ -48,7 +48,7 @@ struct CantileverScene::State
 	scene::StructureRig rig;
 	plastic::Beam beam;
 	// the segment's local z is the member axis: the tip is half a segment out
-	scene::ScaledLoad load;
+	plastic::PointLoad load;
 	CollapseTest test;
 	std::vector<scene::PlanarAngle> angles;  // the ground, then each segment
 	plastic::EnergyLedger ledger;

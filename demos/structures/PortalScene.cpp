@@ -89,7 +89,7 @@ struct PortalScene::State
 	plastic::JointSpec baseSpec;
 	plastic::Joint base;
 	scene::ConstraintInWorld baseInWorld;
-	scene::ScaledLoad horizontal, vertical;
+	plastic::PointLoad horizontal, vertical;
 	CollapseTest test;
 	plastic::EnergyLedger ledger;
 	std::vector<const btRigidBody*> path;  // the bodies in order along the frame, the ground at both ends
@@ -138,7 +138,7 @@ PortalScene::PortalScene(const PortalParameters& p) : m(std::make_unique<State>(
 	s.rig.beforeEachStep([state](double step_s)
 						 {
 		if (state->ramp) state->test.advance(step_s);
-		for (scene::ScaledLoad* load : {&state->horizontal, &state->vertical})
+		for (plastic::PointLoad* load : {&state->horizontal, &state->vertical})
 		{
 			load->setFactor(state->ramp ? state->test.factor() : state->p.load_factor);
 			load->apply();

@@ -190,6 +190,63 @@ TEST(ToolkitCantilever, ASegmentedMemberSleepsOnceItsJointsHold)
 	}
 }
 
+// A load that grows wakes the structure it pushes (PointLoad::apply): the same cantilever, asleep under 0.5 Mp/L,
+// then loaded to 1.05 Mp/L, turns about its root to the same 0.5380 rad. The control applies the larger force with
+// Bullet's applyForce alone: a force on a sleeping body does nothing and does not wake it, and the member stays put.
+TEST(ToolkitCantilever, AGrowingLoadWakesASleepingMember)
+{
+	for (bool throughPointLoad : {true, false})
+	{
+		Rig rig(1000);
+		BeamSpec spec;
+		spec.end_m = btVector3(2, 0, 0);
+		spec.segments = 4;
+		spec.joint.section = rectangle(0.05, 0.10);
+		spec.joint.material = steel();
+		Beam beam(rig.world, spec, &rig.support);
+		const double mp = capacities(spec.joint.section, spec.joint.material).plastic_moment_y_nm;
+		btRigidBody* tip = beam.segments().back();
+		const btVector3 tipEnd(0, 0, btScalar(beam.segmentLength_m() / 2));
+		PointLoad load(*tip, tipEnd, btVector3(0, btScalar(-mp / 2.0), 0));
+		load.setFactor(0.5);
+		const double dt = 1.0 / 240.0;
+		int i = 0;
+		for (; i < 6 * 240 && tip->getActivationState() != ISLAND_SLEEPING; i++)
+		{
+			load.apply();
+			rig.world.stepSimulation(btScalar(dt), 0);
+			load.afterStep();
+		}
+		ASSERT_EQ(ISLAND_SLEEPING, tip->getActivationState()) << "asleep under half its collapse load";
+		EXPECT_EQ(0.0, beam.joints().front().plasticRotation_rad());
+		load.setFactor(1.05);
+		for (int k = 0; k < 3 * 240; k++)
+		{
+			if (throughPointLoad)
+			{
+				load.apply();
+			}
+			else
+			{
+				tip->applyForce(load.force_n(), tip->getWorldTransform().getBasis() * tipEnd);
+			}
+			rig.world.stepSimulation(btScalar(dt), 0);
+			if (throughPointLoad) load.afterStep();
+		}
+		const double rotation = beam.joints().front().plasticRotation_rad();
+		std::printf("[ info     ] %s: asleep after %.3f s, root %.4f rad after the load grew\n", throughPointLoad ? "PointLoad" : "applyForce alone",
+					i * dt, rotation);
+		if (throughPointLoad)
+		{
+			EXPECT_NEAR(rotation, 0.5380, 0.01 * 0.5380);
+		}
+		else
+		{
+			EXPECT_EQ(0.0, rotation);
+		}
+	}
+}
+
 // A beam of every joint method (issue 22): the beam passes its JointSpec whole to each joint, so a brittle beam gets
 // its breaking force (it used to be dropped, and the brittle beam threw). Under a tip load of 0.3 Mp/L every beam
 // holds together with finite states; a brittle beam whose breaking force is below the root's shear breaks.
