@@ -5,8 +5,7 @@
 
 #include "LinearMath/btAlignedObjectArray.h"
 
-#include "CharpyExample.h"
-#include "StructureExample.h"
+#include "SceneExample.h"
 
 namespace
 {

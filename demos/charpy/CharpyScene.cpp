@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
+#include <string>
 
 #include "plastic/JointFactory.h"
 #include "plastic/Section.h"
@@ -61,6 +63,7 @@ struct CharpyScene::Impl
 	btVector3 pivot_m;
 	std::vector<plastic::Joint> joints;      // the specimen's joints, made by the toolkit's joint factory
 	std::vector<plastic::JointSpec> specs;   // what each was made from (the per-step caps follow it)
+	std::vector<btVector3> pivotsInA;        // each joint's pivot in its first part's frame (m)
 
 	btRigidBody* addBody(btDiscreteDynamicsWorld* world, btCollisionShape* shape, double mass_kg, const btVector3& inertia,
 						 const btTransform& transform, double friction, double restitution)
@@ -290,6 +293,7 @@ void CharpyScene::createJoints()
 		spec.breaking_force_n = p.brittle_breaking_force_n;
 		m_impl->joints.push_back(plastic::makeJoint(scene::requireValid(spec), *m_parts[i], *m_parts[i + 1]));
 		m_impl->specs.push_back(spec);
+		m_impl->pivotsInA.push_back(m_parts[i]->getWorldTransform().inverse() * spec.pivot_m);
 		btTypedConstraint* joint = m_impl->joints.back().constraint.get();
 		m_world->addConstraint(joint, true);
 		m_joints.push_back(joint);
@@ -597,4 +601,62 @@ bool CharpyScene::finite() const
 		}
 	}
 	return true;
+}
+
+bool CharpyScene::done() const { return !(m_time_s < m_parameters.duration_s - 1e-12) || !finite(); }
+
+std::vector<scene::JointView> CharpyScene::joints() const
+{
+	std::vector<scene::JointView> views;
+	for (size_t i = 0; i < m_impl->joints.size(); i++)
+	{
+		const plastic::Joint& joint = m_impl->joints[i];
+		scene::JointView v;
+		v.body_a = m_parts[i];
+		v.body_b = m_parts[i + 1];
+		v.pivot_m = m_parts[i]->getWorldTransform() * m_impl->pivotsInA[i];
+		const bool motor = m_parameters.method == CharpyMethod::HingeMotor && joint.constraint.get() == m_middleJoint;
+		v.plastic_rotation_rad = motor ? m_motorRotation_rad : joint.plasticRotation_rad();
+		v.plastic_work_j = motor ? m_motorWork_j : joint.plasticWork_j();
+		v.yielded = v.plastic_rotation_rad > scene::kYieldedRotation_rad;
+		v.broken = !joint.constraint->isEnabled();
+		views.push_back(v);
+	}
+	return views;
+}
+
+scene::SceneLedger CharpyScene::ledger() const
+{
+	const CharpyEnergies e = energies();
+	scene::SceneLedger l;
+	l.title = "charpy, " + std::string(charpyMethodName(m_parameters.method));
+	l.time_s = m_time_s;
+	// the hammer's energy at the start less the potential energy of every body now: what gravity and the swing gave
+	l.load_work_j = m_initialEnergy_j - e.potential_j;
+	l.kinetic_j = e.kinetic_j;
+	l.plastic_booked_j = plasticWork_j();
+	l.plastic_measured_j = m_section.plastic_moment_nm * std::fabs(bendAngle_rad());
+	char line[160];
+	std::snprintf(line, sizeof line, "analytic loss Mp x theta pass %.1f J", m_section.analytic_loss_j);
+	l.answer.push_back(line);
+	std::snprintf(line, sizeof line, "E0 %.1f J, loss %.1f J", m_initialEnergy_j, m_initialEnergy_j - e.total_j);
+	l.status.push_back(line);
+	std::snprintf(line, sizeof line, "bend %.3f rad, plastic %.3f rad", bendAngle_rad(), plasticRotation_rad());
+	l.status.push_back(line);
+	if (broken()) l.status.push_back("broken");
+	if (passedAnvils()) l.status.push_back("passed the anvils");
+	return l;
+}
+
+scene::WorldBox CharpyScene::viewEnvelope() const
+{
+	// The specimen (its back on the anvils' front plane x = 0, along z) and the anvils beside it; it bends away from
+	// the hammer (-x) until its halves slip past the anvils' edges, about half its length behind them.
+	const CharpyParameters& p = m_parameters;
+	const double b = p.specimen_width_m;
+	const double halfSpan = std::max(p.specimen_length_m, p.anvil_gap_m + 2 * p.anvil_width_m) / 2;
+	scene::WorldBox box;
+	box.min_m = btVector3(btScalar(-p.specimen_length_m / 2 - b), btScalar(p.specimen_bottom_y_m - b), btScalar(-halfSpan));
+	box.max_m = btVector3(btScalar(2 * b), btScalar(p.specimen_bottom_y_m + 2 * b), btScalar(halfSpan));
+	return box;
 }

@@ -1,6 +1,7 @@
 // The Charpy impact test scene (thesis section 2): built from CharpyParameters by this one piece of
 // code for the GUI example, the console runner, the tests and the reports. Only the bodies, joints and
-// per-step work that the chosen method needs are created.
+// per-step work that the chosen method needs are created. It is a scene of the shared scene layer
+// (scene::SteppedScene): the one example class of every scene shows it (demos/examples/SceneExample.h).
 #pragma once
 
 #include <memory>
@@ -9,6 +10,7 @@
 #include "CharpyParameters.h"
 #include "CharpySection.h"
 #include "plastic/SubstepPolicy.h"
+#include "scene/SteppedScene.h"
 
 class btCollisionShape;
 class btDiscreteDynamicsWorld;
@@ -23,22 +25,30 @@ struct CharpyEnergies
 	double total_j = 0;      // the sum of the three above
 };
 
-class CharpyScene
+class CharpyScene : public scene::SteppedScene
 {
 public:
 	// Throws std::invalid_argument listing every invalid parameter.
 	explicit CharpyScene(const CharpyParameters& parameters);
-	~CharpyScene();
+	~CharpyScene() override;
 	CharpyScene(const CharpyScene&) = delete;
 	CharpyScene& operator=(const CharpyScene&) = delete;
 
 	// One frame: dt_s (or the coarse auto step far from contact), split into internal steps of at most
 	// contact_substep_s while the specimen is in or near contact.
-	void step();
+	void step() override;
+	// at the run's duration, or when a body state is not finite
+	bool done() const override;
+	double time_s() const override { return m_time_s; }
+	btDiscreteDynamicsWorld& world() override { return *m_world; }
+	// the specimen's joints (none for the rigid body)
+	std::vector<scene::JointView> joints() const override;
+	scene::SceneLedger ledger() const override;
+	// the anvils and the specimen as it bends through them (the hammer swings through it at the impact)
+	scene::WorldBox viewEnvelope() const override;
 
 	const CharpyParameters& parameters() const { return m_parameters; }
 	const CharpySection& section() const { return m_section; }
-	double time_s() const { return m_time_s; }
 	long internalSteps() const { return m_internalSteps; }
 	double lastFrameStep_s() const { return m_lastFrameStep_s; }
 
@@ -59,7 +69,6 @@ public:
 	double maxDistance_m() const { return m_maxDistance_m; }      // farthest dynamic body centre from the origin
 	bool finite() const;             // no NaN or infinity in any body state
 
-	btDiscreteDynamicsWorld* world() { return m_world.get(); }
 	const std::vector<btRigidBody*>& specimenParts() const { return m_parts; }
 	btRigidBody* hammer() const { return m_hammer; }
 

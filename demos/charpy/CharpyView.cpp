@@ -37,7 +37,7 @@ void resetCharpyCamera(GUIHelperInterface* guiHelper, const CharpyParameters& pa
 void showCharpyScene(GUIHelperInterface* guiHelper, CharpyScene& scene)
 {
 	guiHelper->removeAllGraphicsInstances();
-	btDiscreteDynamicsWorld* world = scene.world();
+	btDiscreteDynamicsWorld* world = &scene.world();
 	const auto& parts = scene.specimenParts();
 	for (int i = 0; i < world->getNumCollisionObjects(); i++)
 	{

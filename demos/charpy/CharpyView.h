@@ -1,5 +1,5 @@
-// How the Charpy scene is shown: camera, body colours, the on-screen energy panel. Shared by the
-// browser example and the figure renderer. Reads the scene; never changes its physics.
+// How the thesis figures show the Charpy scene (demos/figures): camera, body colours, the energy panel. The browser
+// shows it as every scene (demos/examples/SceneExample.cpp). Reads the scene; never changes its physics.
 #pragma once
 
 #include <string>

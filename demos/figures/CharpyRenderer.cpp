@@ -38,8 +38,8 @@ Image CharpyRenderer::render(CharpyScene& scene, const std::string& text)
 {
 	m_app->m_instancingRenderer->init();
 	m_app->m_instancingRenderer->updateCamera(m_app->getUpAxis());
-	m_gui->syncPhysicsToGraphics(scene.world());
-	m_gui->render(scene.world());
+	m_gui->syncPhysicsToGraphics(&scene.world());
+	m_gui->render(&scene.world());
 	if (!text.empty()) drawCharpyPanel(m_app.get(), text, 10, 15);
 
 	const int w = width();

@@ -25,6 +25,8 @@ scene::ControlledScene wreckingBallControls()
 {
 	scene::ControlledScene c;
 	c.name = "wrecking ball";
+	c.methods = scene::structureMethodNames();
+	c.method = "plastic-hinge";
 	c.sliders = {{"release angle (rad)", 0, 1.5f, false, 1.0f},
 				 {"ball mass (kg)", 100, 10000, false, 2000},
 				 {"yield stress (MPa)", 100, 800, false, 355},
@@ -33,8 +35,8 @@ scene::ControlledScene wreckingBallControls()
 				 {"impact height (m)", 0.6f, 3, false, 1.5f},
 				 {"direct solver (1) or upstream SI (0)", 0, 1, true, 1},
 				 {"solver iterations", 1, 100, true, 10}};
-	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<scene::SteppedScene>
-	{ return std::make_unique<WreckingBallScene>(wreckingBallFromSliders(v, m)); };
+	c.build = [](const std::vector<float>& v, const std::string& m) -> std::unique_ptr<scene::SteppedScene>
+	{ return std::make_unique<WreckingBallScene>(wreckingBallFromSliders(v, scene::structureMethod(m))); };
 	// from +z, a little above: the frame in its plane, the ball coming from the left
 	c.camera_pitch_deg = -8;
 	c.time_scale = 1;
@@ -56,8 +58,8 @@ scene::ControlledScene buildingControls()
 	c.name = "building";
 	c.sliders.push_back({"storeys", 1, 10, true, 5});
 	c.sliders.push_back({"bays", 1, 8, true, 4});
-	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<scene::SteppedScene>
-	{ return std::make_unique<WreckingBallScene>(buildingFromSliders(v, m)); };
+	c.build = [](const std::vector<float>& v, const std::string& m) -> std::unique_ptr<scene::SteppedScene>
+	{ return std::make_unique<WreckingBallScene>(buildingFromSliders(v, scene::structureMethod(m))); };
 	// the wrecking ball's view direction (from +z, a little above)
 	return c;
 }

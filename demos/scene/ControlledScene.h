@@ -26,10 +26,11 @@ struct ControlledScene
 {
 	std::string name;
 	std::vector<SliderSpec> sliders;
-	plastic::JointMethod method = plastic::JointMethod::PlasticHinge;  // the method it starts with
-	// the scene of these slider values (one per slider, in order) and method; throws std::invalid_argument naming a
-	// value out of its range
-	std::function<std::unique_ptr<SteppedScene>(const std::vector<float>& values, plastic::JointMethod method)> build;
+	std::vector<std::string> methods;  // the ways of joining it the example offers, by name ("plastic-hinge")
+	std::string method;                // the one it starts with
+	// the scene of these slider values (one per slider, in order) and a method of methods; throws
+	// std::invalid_argument naming a value out of its range
+	std::function<std::unique_ptr<SteppedScene>(const std::vector<float>& values, const std::string& method)> build;
 	// the view direction; the examples frame the scene's view envelope from it (demos/examples/ViewFraming.h)
 	float camera_yaw_deg = 180;  // from +z
 	float camera_pitch_deg = 0;
@@ -38,4 +39,9 @@ struct ControlledScene
 
 // the starting values of a scene's sliders
 std::vector<float> initialValues(const ControlledScene& scene);
+
+// the joint methods of the structure scenes' examples (hinge-motor, plastic-hinge, elastic-plastic, elastic-plastic2)
+std::vector<std::string> structureMethodNames();
+// the method of that name; throws std::invalid_argument naming the methods for any other
+plastic::JointMethod structureMethod(const std::string& name);
 }  // namespace scene

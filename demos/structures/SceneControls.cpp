@@ -78,6 +78,8 @@ scene::ControlledScene cantileverControls()
 {
 	scene::ControlledScene c;
 	c.name = "cantilever";
+	c.methods = scene::structureMethodNames();
+	c.method = "plastic-hinge";
 	c.sliders = {{"tip load P L / Mp", 0, 3, false, 1.5f},
 				 {"segments", 1, 8, true, 4},
 				 {"length (m)", 0.5f, 5, false, 2},
@@ -86,9 +88,9 @@ scene::ControlledScene cantileverControls()
 				 {"follower load (0/1)", 0, 1, true, 0},
 				 kStep,
 				 kIterations};
-	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<scene::SteppedScene>
+	c.build = [](const std::vector<float>& v, const std::string& m) -> std::unique_ptr<scene::SteppedScene>
 	{
-		const CantileverParameters p = cantileverFromSliders(v, m);
+		const CantileverParameters p = cantileverFromSliders(v, scene::structureMethod(m));
 		requireValid(validateCantileverParameters(p));
 		return std::make_unique<CantileverScene>(p);
 	};
@@ -101,6 +103,8 @@ scene::ControlledScene portalControls()
 {
 	scene::ControlledScene c;
 	c.name = "portal frame";
+	c.methods = scene::structureMethodNames();
+	c.method = "plastic-hinge";
 	c.sliders = {{"horizontal load H (kN) at factor 1", 0, 200, false, 50},
 				 {"vertical load V (kN) at factor 1", 0, 200, false, 75},
 				 {"span (m)", 1, 10, false, 4},
@@ -108,9 +112,9 @@ scene::ControlledScene portalControls()
 				 {"load factor ramp (1/s)", 0.005f, 0.2f, false, 0.02f},
 				 kStep,
 				 kIterations};
-	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<scene::SteppedScene>
+	c.build = [](const std::vector<float>& v, const std::string& m) -> std::unique_ptr<scene::SteppedScene>
 	{
-		const PortalParameters p = portalFromSliders(v, m);
+		const PortalParameters p = portalFromSliders(v, scene::structureMethod(m));
 		requireValid(validatePortalParameters(p));
 		return std::make_unique<PortalScene>(p);
 	};
@@ -124,6 +128,8 @@ scene::ControlledScene dropWeightControls()
 {
 	scene::ControlledScene c;
 	c.name = "drop weight";
+	c.methods = scene::structureMethodNames();
+	c.method = "plastic-hinge";
 	c.sliders = {{"weight mass (kg)", 10, 5000, false, 1000},
 				 {"impact speed (m/s)", 0.5f, 20, false, 4.5f},
 				 {"span (m)", 0.5f, 10, false, 2},
@@ -132,9 +138,9 @@ scene::ControlledScene dropWeightControls()
 				 {"section depth (mm)", 20, 300, false, 100},
 				 kStep,
 				 kIterations};
-	c.build = [](const std::vector<float>& v, plastic::JointMethod m) -> std::unique_ptr<scene::SteppedScene>
+	c.build = [](const std::vector<float>& v, const std::string& m) -> std::unique_ptr<scene::SteppedScene>
 	{
-		const DropWeightParameters p = dropWeightFromSliders(v, m);
+		const DropWeightParameters p = dropWeightFromSliders(v, scene::structureMethod(m));
 		requireValid(validateDropWeightParameters(p));
 		return std::make_unique<DropWeightScene>(p);
 	};

@@ -1,6 +1,8 @@
 // The Charpy example's controls stand for valid scene parameters for every method, at their
-// defaults and at both ends of every slider.
+// defaults and at both ends of every slider; they build the scene.
 #include <gtest/gtest.h>
+
+#include <stdexcept>
 
 #include "CharpyControls.h"
 #include "CharpyParameters.h"
@@ -17,22 +19,26 @@ std::string errorsOf(const CharpyControls& controls, CharpyMethod method)
 
 TEST(CharpyControls, DefaultsAreValidForEveryMethod)
 {
+	const scene::ControlledScene c = charpyControls();
+	ASSERT_EQ(size_t(kCharpyMethodCount), c.methods.size());
 	for (int n = 1; n <= kCharpyMethodCount; n++)
 	{
 		const CharpyMethod method = charpyMethodByNumber(n);
-		EXPECT_EQ(errorsOf(CharpyControls{}, method), "") << charpyMethodName(method);
+		EXPECT_EQ(errorsOf(charpyControlsFromSliders(scene::initialValues(c)), method), "") << charpyMethodName(method);
+		EXPECT_EQ(c.methods[size_t(n - 1)], charpyMethodName(method));
 	}
 }
 
 TEST(CharpyControls, BothEndsOfEverySliderAreValid)
 {
-	for (const CharpySlider& s : kCharpySliders)
+	const scene::ControlledScene c = charpyControls();
+	for (size_t i = 0; i < c.sliders.size(); i++)
 	{
-		for (float end : {s.min, s.max})
+		for (float end : {c.sliders[i].min, c.sliders[i].max})
 		{
-			CharpyControls controls;
-			controls.*s.value = btScalar(end);
-			EXPECT_EQ(errorsOf(controls, CharpyMethod::PlasticHinge), "") << s.label << " = " << end;
+			std::vector<float> values = scene::initialValues(c);
+			values[i] = end;
+			EXPECT_EQ(errorsOf(charpyControlsFromSliders(values), CharpyMethod::PlasticHinge), "") << c.sliders[i].label << " = " << end;
 		}
 	}
 }
@@ -50,6 +56,16 @@ TEST(CharpyControls, ParametersCarryTheControlsInSceneUnits)
 	EXPECT_NEAR(p.dt_s, 1e-3, 1e-12);
 	EXPECT_EQ(p.parts, 6);
 	EXPECT_NEAR(p.anvil_gap_m, 0.03, 1e-9);
-	EXPECT_TRUE(controls != CharpyControls{});
-	EXPECT_TRUE(CharpyControls{} == CharpyControls{});
+}
+
+// the example's scene is the runner's: the same parameters step the same world
+TEST(CharpyControls, TheyBuildTheSceneOfTheirMethod)
+{
+	const scene::ControlledScene c = charpyControls();
+	std::unique_ptr<scene::SteppedScene> built = c.build(scene::initialValues(c), "elastic-plastic2");
+	ASSERT_TRUE(built);
+	EXPECT_NE(built->ledger().title.find("elastic-plastic2"), std::string::npos) << built->ledger().title;
+	EXPECT_EQ(1u, built->joints().size());  // one part pair: one joint
+	EXPECT_THROW(c.build(scene::initialValues(c), "welded"), std::invalid_argument);
+	EXPECT_THROW(c.build({1, 2}, "plastic-hinge"), std::invalid_argument);
 }

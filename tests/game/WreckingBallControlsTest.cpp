@@ -27,7 +27,7 @@ TEST(WreckingBallControls, EverySliderRangeBuilds)
 		{
 			std::vector<float> values = scene::initialValues(scene);
 			values[i] = v;
-			EXPECT_NO_THROW(scene.build(values, plastic::JointMethod::PlasticHinge)) << scene.sliders[i].label << " = " << v;
+			EXPECT_NO_THROW(scene.build(values, "plastic-hinge")) << scene.sliders[i].label << " = " << v;
 		}
 }
 
@@ -49,6 +49,6 @@ TEST(BuildingControls, StartAtFiveStoreysAndFourBaysAndEveryRangeBuilds)
 		{
 			std::vector<float> values = start;
 			values[i] = v;
-			EXPECT_NO_THROW(scene.build(values, plastic::JointMethod::PlasticHinge)) << scene.sliders[i].label << " = " << v;
+			EXPECT_NO_THROW(scene.build(values, "plastic-hinge")) << scene.sliders[i].label << " = " << v;
 		}
 }

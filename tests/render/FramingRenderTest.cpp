@@ -19,7 +19,7 @@
 #include "OpenGLWindow/SimpleOpenGL3App.h"
 #include "OpenGLGuiHelper.h"
 
-#include "StructureExample.h"
+#include "SceneExample.h"
 #include "ViewFraming.h"
 
 namespace

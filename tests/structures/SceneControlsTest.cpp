@@ -47,7 +47,7 @@ TEST(SceneControls, EverySliderRangeBuilds)
 			{
 				std::vector<float> values = scene::initialValues(scene);
 				values[i] = v;
-				EXPECT_NO_THROW(scene.build(values, plastic::JointMethod::PlasticHinge)) << scene.name << ": " << scene.sliders[i].label << " = " << v;
+				EXPECT_NO_THROW(scene.build(values, "plastic-hinge")) << scene.name << ": " << scene.sliders[i].label << " = " << v;
 			}
 }
 
@@ -58,14 +58,14 @@ TEST(SceneControls, BadValuesAreNamed)
 	values[1] = 0;  // segments
 	try
 	{
-		c.build(values, plastic::JointMethod::PlasticHinge);
+		c.build(values, "plastic-hinge");
 		FAIL() << "0 segments built";
 	}
 	catch (const std::invalid_argument& e)
 	{
 		EXPECT_EQ(std::string(e.what()), "segments: 0 is not in [1, 1000]");
 	}
-	EXPECT_THROW(c.build({1, 2}, plastic::JointMethod::PlasticHinge), std::invalid_argument);
+	EXPECT_THROW(c.build({1, 2}, "plastic-hinge"), std::invalid_argument);
 }
 
 // The example's scene is the runner's: stepped to the end it gives runDropWeight's figures to the last bit, and its
@@ -74,7 +74,7 @@ TEST(SceneControls, TheExampleSceneIsTheRunnersScene)
 {
 	const scene::ControlledScene c = dropWeightControls();
 	const std::vector<float> values = scene::initialValues(c);
-	std::unique_ptr<scene::SteppedScene> scene = c.build(values, plastic::JointMethod::PlasticHinge);
+	std::unique_ptr<scene::SteppedScene> scene = c.build(values, "plastic-hinge");
 	while (!scene->done()) scene->step();
 	const DropWeightResult r = runDropWeight(dropWeightFromSliders(values, plastic::JointMethod::PlasticHinge));
 	const scene::SceneLedger l = scene->ledger();

@@ -1,8 +1,8 @@
-// One example class for every scene of SceneControls: sliders and a method choice build the scene, the browser's clock
-// steps it (time scale: simulated seconds per browser second), the browser draws its world. The camera frames the
-// scene's view envelope in the part of the window the GUI and the ledger leave free (ViewFraming.h), again whenever
-// the window's size changes.
-#include "StructureExample.h"
+// One example class for every scene (scene::ControlledScene: the structures, the game scene, Charpy): sliders and a
+// method choice build the scene, the browser's clock steps it (time scale: simulated seconds per browser second), the
+// browser draws its world. The camera frames the scene's view envelope in the part of the window the GUI and the
+// ledger leave free (ViewFraming.h), again whenever the window's size changes.
+#include "SceneExample.h"
 
 #include <memory>
 #include <stdexcept>
@@ -16,6 +16,7 @@
 #include "CommonInterfaces/CommonParameterInterface.h"
 #include "CommonInterfaces/CommonRenderInterface.h"
 
+#include "CharpyControls.h"
 #include "SceneControls.h"
 #include "StructureView.h"
 #include "ViewFraming.h"
@@ -23,21 +24,20 @@
 
 namespace
 {
-const plastic::JointMethod kMethods[] = {plastic::JointMethod::HingeMotor, plastic::JointMethod::PlasticHinge, plastic::JointMethod::ElasticPlastic,
-										 plastic::JointMethod::ElasticPlastic2};
-const char* kMethodNames[] = {"hinge-motor", "plastic-hinge", "elastic-plastic", "elastic-plastic2"};
 const int kLedgerStatusLines = 3;
 const int kLedgerSpareCharacters = 6;
 
-class StructureExample : public CommonExampleInterface
+class SceneExample : public CommonExampleInterface
 {
 public:
-	StructureExample(GUIHelperInterface* guiHelper, scene::ControlledScene kind, int methodNumber)
+	SceneExample(GUIHelperInterface* guiHelper, scene::ControlledScene kind, int methodNumber)
 		: m_guiHelper(guiHelper), m_kind(std::move(kind)), m_timeScale(m_kind.time_scale)
 	{
 		const std::vector<float> initial = scene::initialValues(m_kind);
 		m_sliderValues.assign(initial.begin(), initial.end());  // fixed size from here on: the sliders point into it
-		m_method = methodNumber >= 1 && methodNumber <= 4 ? kMethods[methodNumber - 1] : m_kind.method;
+		for (const std::string& name : m_kind.methods) m_methodNames.push_back(name.c_str());
+		const int count = int(m_kind.methods.size());
+		m_method = methodNumber >= 1 && methodNumber <= count ? m_kind.methods[size_t(methodNumber - 1)] : m_kind.method;
 	}
 
 	void initPhysics() override
@@ -120,15 +120,16 @@ private:
 		CommonParameterInterface* parameters = m_guiHelper->getParameterInterface();
 		if (!parameters) return;
 		ComboBoxParams combo;
-		combo.m_numItems = 4;
-		combo.m_items = kMethodNames;
+		combo.m_numItems = int(m_methodNames.size());
+		combo.m_items = m_methodNames.data();
 		combo.m_startItem = 0;
-		for (int i = 0; i < 4; i++)
-			if (kMethods[i] == m_method) combo.m_startItem = i;
+		for (size_t i = 0; i < m_kind.methods.size(); i++)
+			if (m_kind.methods[i] == m_method) combo.m_startItem = int(i);
 		combo.m_userPointer = this;
 		combo.m_callback = [](int item, const char*, void* self)
 		{
-			if (item >= 0 && item < 4) static_cast<StructureExample*>(self)->m_method = kMethods[item];
+			SceneExample* example = static_cast<SceneExample*>(self);
+			if (item >= 0 && item < int(example->m_kind.methods.size())) example->m_method = example->m_kind.methods[size_t(item)];
 		};
 		parameters->registerComboBox(combo);
 		for (size_t i = 0; i < m_kind.sliders.size(); i++)
@@ -175,8 +176,9 @@ private:
 	scene::ControlledScene m_kind;
 	std::vector<btScalar> m_sliderValues;  // what the sliders say (their own storage)
 	std::vector<float> m_applied;          // what the scene was built from
-	plastic::JointMethod m_method = plastic::JointMethod::PlasticHinge;
-	plastic::JointMethod m_appliedMethod = plastic::JointMethod::PlasticHinge;
+	std::vector<const char*> m_methodNames;  // the combo box's items (m_kind owns the strings)
+	std::string m_method;
+	std::string m_appliedMethod;
 	btScalar m_timeScale;
 	std::unique_ptr<scene::SteppedScene> m_scene;
 	std::string m_error;
@@ -188,27 +190,32 @@ private:
 };
 }  // namespace
 
+CommonExampleInterface* CharpyExampleCreateFunc(CommonExampleOptions& options)
+{
+	return new SceneExample(options.m_guiHelper, charpyControls(), options.m_option);
+}
+
 CommonExampleInterface* CantileverExampleCreateFunc(CommonExampleOptions& options)
 {
-	return new StructureExample(options.m_guiHelper, structures::cantileverControls(), options.m_option);
+	return new SceneExample(options.m_guiHelper, structures::cantileverControls(), options.m_option);
 }
 
 CommonExampleInterface* PortalExampleCreateFunc(CommonExampleOptions& options)
 {
-	return new StructureExample(options.m_guiHelper, structures::portalControls(), options.m_option);
+	return new SceneExample(options.m_guiHelper, structures::portalControls(), options.m_option);
 }
 
 CommonExampleInterface* DropWeightExampleCreateFunc(CommonExampleOptions& options)
 {
-	return new StructureExample(options.m_guiHelper, structures::dropWeightControls(), options.m_option);
+	return new SceneExample(options.m_guiHelper, structures::dropWeightControls(), options.m_option);
 }
 
 CommonExampleInterface* WreckingBallExampleCreateFunc(CommonExampleOptions& options)
 {
-	return new StructureExample(options.m_guiHelper, game::wreckingBallControls(), options.m_option);
+	return new SceneExample(options.m_guiHelper, game::wreckingBallControls(), options.m_option);
 }
 
 CommonExampleInterface* BuildingExampleCreateFunc(CommonExampleOptions& options)
 {
-	return new StructureExample(options.m_guiHelper, game::buildingControls(), options.m_option);
+	return new SceneExample(options.m_guiHelper, game::buildingControls(), options.m_option);
 }
