@@ -414,12 +414,7 @@ scene::SceneLedger WreckingBallScene::ledger() const
 	return l;
 }
 
-WreckingBallResult runWreckingBall(const WreckingBallParameters& p)
-{
-	WreckingBallScene scene(p);
-	while (!scene.done()) scene.step();
-	return scene.result();
-}
+WreckingBallResult runWreckingBall(const WreckingBallParameters& p) { return scene::runToEnd<WreckingBallScene>(p); }
 }  // namespace game
 
 namespace game

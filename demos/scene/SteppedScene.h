@@ -62,4 +62,13 @@ public:
 	// and the reach of its mechanism): what the examples keep in view. Not the ground slab.
 	virtual WorldBox viewEnvelope() const = 0;
 };
+
+// A scene of Parameters stepped until it is done, and its result() then (what the console runners print).
+template <class Scene, class Parameters>
+auto runToEnd(const Parameters& parameters)
+{
+	Scene scene(parameters);
+	while (!scene.done()) scene.step();
+	return scene.result();
+}
 }  // namespace scene

@@ -212,12 +212,7 @@ scene::SceneLedger CantileverScene::ledger() const
 	return l;
 }
 
-CantileverResult runCantilever(const CantileverParameters& p)
-{
-	CantileverScene scene(p);
-	while (!scene.done()) scene.step();
-	return scene.result();
-}
+CantileverResult runCantilever(const CantileverParameters& p) { return scene::runToEnd<CantileverScene>(p); }
 }  // namespace structures
 
 namespace structures

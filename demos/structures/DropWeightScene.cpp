@@ -278,12 +278,7 @@ scene::SceneLedger DropWeightScene::ledger() const
 	return l;
 }
 
-DropWeightResult runDropWeight(const DropWeightParameters& p)
-{
-	DropWeightScene scene(p);
-	while (!scene.done()) scene.step();
-	return scene.result();
-}
+DropWeightResult runDropWeight(const DropWeightParameters& p) { return scene::runToEnd<DropWeightScene>(p); }
 }  // namespace structures
 
 namespace structures

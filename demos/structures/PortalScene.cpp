@@ -242,12 +242,7 @@ scene::SceneLedger PortalScene::ledger() const
 	return l;
 }
 
-PortalResult runPortal(const PortalParameters& p)
-{
-	PortalScene scene(p);
-	while (!scene.done()) scene.step();
-	return scene.result();
-}
+PortalResult runPortal(const PortalParameters& p) { return scene::runToEnd<PortalScene>(p); }
 }  // namespace structures
 
 namespace structures
