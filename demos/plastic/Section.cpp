@@ -111,6 +111,7 @@ SectionProperties tube(double outer_diameter_m, double wall_m)
 	const double D = outer_diameter_m, d = outer_diameter_m - 2.0 * wall_m;
 	SectionProperties s;
 	s.shape = "tube";
+	s.wall_m = wall_m;
 	s.biaxial_interaction = BiaxialInteraction::Circle;
 	s.torsion_interaction = TorsionInteraction::Circle;
 	s.width_m = s.depth_m = D;
@@ -143,6 +144,8 @@ SectionProperties iSection(double depth_m, double flange_width_m, double web_thi
 	const double hw = h - 2.0 * tf;  // clear web depth
 	SectionProperties s;
 	s.shape = "I section";
+	s.flange_thickness_m = tf;
+	s.web_thickness_m = tw;
 	s.biaxial_interaction = BiaxialInteraction::ISection;
 	s.width_m = b;
 	s.depth_m = h;

@@ -53,6 +53,9 @@ struct SectionProperties
 	double plastic_modulus_z_m3 = 0;
 	double torsion_constant_m4 = 0;      // St Venant J: torsional stiffness G J / L
 	double plastic_torsion_modulus_m3 = 0;  // fully plastic torque = tau_y * this
+	double wall_m = 0;                      // tube: its wall (0 for the other shapes)
+	double flange_thickness_m = 0;          // I section: its flanges' and web's thickness (0 for the other shapes)
+	double web_thickness_m = 0;
 	BiaxialInteraction biaxial_interaction = BiaxialInteraction::None;
 	AxialInteraction axial_interaction = AxialInteraction::None;
 	TorsionInteraction torsion_interaction = TorsionInteraction::None;
