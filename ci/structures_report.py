@@ -1,23 +1,27 @@
 #!/usr/bin/env python3
 """Structures with textbook answers: error against run time.
 
-  ci/structures_report.py [--runner=build/bin/structures] [--out=report/STRUCTURES.md] [--jobs=2] [--command=TEXT]
+  ci/structures_report.py [--runner=build/bin/structures] [--out=report/STRUCTURES.md] [--csv=build/sweep/structures.csv]
+                          [--jobs=2] [--command=TEXT]
 
 Runs build/bin/structures for every case below, every joint method of the factory (the upstream hinge-motor
 stand-in among them), three solvers (upstream's sequential impulse, btMLCPSolver + Dantzig as upstream constructs
 it, and the toolkit's default, btDirectJointSolver of patch 0019), internal steps 1/60, 1/120, 1/240, 1/480 s and 1 ms at 10 and 50 iterations, plus the converged setting
 the tests use; then the game-settings summary (1/240 s, 10 iterations: collapse, holds at 0.9 of the collapse load
 for 3 s, energy, fallbacks, cost per step). Writes OUT (markdown) whole (tmp file + rename): the error against the
-plastic-analysis answer, whether the predicted mechanism formed, and the wall time of each run.
+plastic-analysis answer, whether the predicted mechanism formed, and the wall time of each run. The runs go through
+ci/sweep (the runs of the other reports): their rows are kept in CSV (the runner's JSON whole in its 'json' column), and
+a run the same runner binary already made is not run again.
 """
 import argparse
-import concurrent.futures
 import json
 import os
 import platform
-import subprocess
 import sys
 import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sweep import runner as sweep  # noqa: E402
 
 METHODS = ["hinge-motor", "plastic-hinge", "elastic-plastic", "elastic-plastic2"]
 # runner --solver name, label in the tables
@@ -42,16 +46,6 @@ CASES = [
     ("drop weight, clamped", "the same, clamped: mid-span rotation (estimate 0.0987 rad; supports half of it)",
      ["--scene=drop-weight", "--clamped"], (1e-4, 1000), "midspan_rotation_rad", "analytic_midspan_rotation_rad", None),
 ]
-
-
-def run(runner, args):
-    start = time.monotonic()
-    p = subprocess.run([runner, "--json"] + args, capture_output=True, text=True, timeout=3600)
-    if p.returncode not in (0, 3):
-        return {"error": p.stderr.strip()}
-    d = json.loads(p.stdout)
-    d["process_s"] = time.monotonic() - start
-    return d
 
 
 def mechanism_ok(kind, d):
@@ -141,6 +135,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--runner", default="build/bin/structures")
     ap.add_argument("--out", default="report/STRUCTURES.md")
+    ap.add_argument("--csv", default="build/sweep/structures.csv")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--command", default="python3 ci/structures_report.py")
     a = ap.parse_args()
@@ -157,12 +152,12 @@ def main():
         for s, _ in SOLVERS:
             for m in METHODS:
                 jobs[("hold", ci, m, s)] = hold_args(ci) + ["--solver=" + s, "--method=" + m, "--dt=%.10g" % GAME[1], "--iterations=%d" % GAME[2]]
-    results = {}
     started = time.monotonic()
-    with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as pool:
-        futures = {pool.submit(run, a.runner, args): key for key, args in jobs.items()}
-        for f in concurrent.futures.as_completed(futures):
-            results[futures[f]] = f.result()
+    # the runner exits 3 when its verdict fails (the JSON is printed all the same)
+    by_name = {repr(key): key for key in jobs}
+    rows = sweep.run_all(a.runner, [{"key": repr(key), "flags": args} for key, args in jobs.items()], a.csv, a.jobs, timeout_s=3600,
+                         accept_codes=(0, 3), keep_json=True)
+    results = {by_name[r["key"]]: ({"error": r["failure"]} if r.get("failure") else json.loads(r["json"])) for r in rows}
     total = time.monotonic() - started
 
     def converged_cell(ci, m, s):

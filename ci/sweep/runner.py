@@ -42,8 +42,12 @@ def runner_id(path):
     return digest.hexdigest()[:16]
 
 
-def run_one(runner, configuration, timeout_s):
-    """One run: the CSV row (configuration columns + JSON fields, or a 'failure' column)."""
+def run_one(runner, configuration, timeout_s, accept_codes=(0,), keep_json=False):
+    """One run: the CSV row (configuration columns + JSON fields, or a 'failure' column).
+
+    accept_codes: the exit codes whose JSON counts (a runner may print its JSON and exit with a verdict code);
+    keep_json: the whole JSON also goes in a 'json' column, for reports that read lists and types back.
+    """
     row = {k: v for k, v in configuration.items() if k not in ("flags", "runner")}
     row["flags"] = " ".join(configuration["flags"])
     runner = configuration.get("runner") or runner
@@ -53,7 +57,7 @@ def run_one(runner, configuration, timeout_s):
     except subprocess.TimeoutExpired:
         row["failure"] = f"timeout after {timeout_s} s"
         return row
-    if done.returncode != 0:
+    if done.returncode not in accept_codes:
         row["failure"] = f"exit {done.returncode}: {done.stderr.strip()[:200]}"
         return row
     try:
@@ -62,10 +66,12 @@ def run_one(runner, configuration, timeout_s):
         row["failure"] = "no JSON on stdout"
         return row
     row.update({k: (int(v) if isinstance(v, bool) else v) for k, v in result.items()})
+    if keep_json:
+        row["json"] = json.dumps(result)
     return row
 
 
-def run_all(runner, configurations, out_csv, jobs, timeout_s=600, first_columns=("key",), log=sys.stderr):
+def run_all(runner, configurations, out_csv, jobs, timeout_s=600, first_columns=("key",), log=sys.stderr, accept_codes=(0,), keep_json=False):
     """Runs every configuration not yet in out_csv, keeping the finished rows; returns all rows.
 
     out_csv is rewritten whole after each finished run, so an interrupted sweep loses nothing
@@ -87,7 +93,7 @@ def run_all(runner, configurations, out_csv, jobs, timeout_s=600, first_columns=
     order = {k: i for i, k in enumerate(keys)}
     start = time.monotonic()
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
-        futures = [pool.submit(run_one, runner, c, timeout_s) for c in todo]
+        futures = [pool.submit(run_one, runner, c, timeout_s, accept_codes, keep_json) for c in todo]
         for n, future in enumerate(concurrent.futures.as_completed(futures), 1):
             rows.append(future.result())
             rows.sort(key=lambda r: order[r["key"]])
