@@ -1,6 +1,6 @@
 #include "CharpyCommandLine.h"
 
-#include "scene/FlagArgument.h"
+#include "scene/FlagTable.h"
 
 #include <cerrno>
 #include <cstdlib>
@@ -19,9 +19,9 @@ Setter number(double CharpyParameters::*field)
 	return [field](CharpyParameters& p, const std::string& text) { return parseNumber(text, p.*field); };
 }
 
-const std::map<std::string, std::pair<Setter, const char*>>& valueFlags()
+const scene::Flags<CharpyParameters>& valueFlags()
 {
-	static const std::map<std::string, std::pair<Setter, const char*>> flags = {
+	static const scene::Flags<CharpyParameters> flags = {
 		{"method", {[](CharpyParameters& p, const std::string& text) {
 						auto m = parseCharpyMethod(text);
 						if (m) p.method = *m;
@@ -92,12 +92,7 @@ CharpyCommandLine parseCharpyCommandLine(const std::vector<std::string>& argumen
 		const std::string& name = flag->name;
 		const std::string& value = flag->value;
 		const bool hasValue = flag->hasValue;
-		auto flagWithoutValue = [&](bool& target) {
-			if (hasValue)
-				cl.errors.push_back("--" + name + " takes no value");
-			else
-				target = true;
-		};
+		auto flagWithoutValue = [&](bool& target) { scene::setSwitch(*flag, target, cl.errors); };
 		if (name == "help")
 			flagWithoutValue(cl.help);
 		else if (name == "list-methods")
@@ -120,19 +115,7 @@ CharpyCommandLine parseCharpyCommandLine(const std::vector<std::string>& argumen
 		}
 		else
 		{
-			auto it = valueFlags().find(name);
-			if (it == valueFlags().end())
-			{
-				cl.errors.push_back("unknown flag --" + name + " (see --help)");
-			}
-			else if (!hasValue)
-			{
-				cl.errors.push_back("--" + name + " needs a value: --" + name + "=" + it->second.second);
-			}
-			else if (!it->second.first(cl.parameters, value))
-			{
-				cl.errors.push_back("--" + name + ": '" + value + "' is not valid; expected " + it->second.second);
-			}
+			scene::applyFlag(valueFlags(), cl.parameters, *flag, cl.errors);
 		}
 	}
 	if (cl.errors.empty() && !cl.help && !cl.listMethods)
@@ -152,9 +135,5 @@ std::string charpyUsage()
 		"Runs the Charpy impact test scene headless and prints the energy balance.\n"
 		"  --geometry=thesis    (default) the thesis' scene: a flat striker nose as thick as the hammer, released from 2.8 rad\n"
 		"  --geometry=standard  the standard machine's striker (ISO 148-1): a 2 mm edge at mid-span, 5.2 m/s\n";
-	for (const auto& [name, flag] : valueFlags())
-	{
-		text += "  --" + name + "=" + flag.second + "\n";
-	}
-	return text;
+	return text + scene::usageOf(valueFlags());
 }

@@ -1,6 +1,6 @@
 #include "WreckingBallCommandLine.h"
 
-#include "scene/FlagArgument.h"
+#include "scene/FlagTable.h"
 
 #include <cerrno>
 #include <cstdlib>
@@ -14,30 +14,16 @@ namespace
 using scene::parseInteger;
 using scene::parseNumber;
 
-struct Flag
-{
-	std::function<bool(WreckingBallParameters&, const std::string&)> set;
-	std::string help;
-};
+using Flag = scene::Flag<WreckingBallParameters>;
 
-Flag number(double WreckingBallParameters::*field, const char* help)
-{
-	return {[field](WreckingBallParameters& p, const std::string& t)
-			{ return parseNumber(t, p.*field); },
-			help};
-}
+Flag number(double WreckingBallParameters::*field, const char* help) { return scene::numberFlag(field, help); }
 
-Flag whole(int WreckingBallParameters::*field, const char* help)
-{
-	return {[field](WreckingBallParameters& p, const std::string& t)
-			{ return parseInteger(t, p.*field); },
-			help};
-}
+Flag whole(int WreckingBallParameters::*field, const char* help) { return scene::wholeFlag(field, help); }
 
-const std::map<std::string, Flag>& flags()
+const scene::Flags<WreckingBallParameters>& flags()
 {
 	using P = WreckingBallParameters;
-	static const std::map<std::string, Flag> f = {
+	static const scene::Flags<WreckingBallParameters> f = {
 		{"method", {[](P& p, const std::string& t)
 					{
 						for (plastic::JointMethod m : {plastic::JointMethod::HingeMotor, plastic::JointMethod::PlasticHinge, plastic::JointMethod::ElasticPlastic,
@@ -101,30 +87,17 @@ WreckingBallCommandLine parseWreckingBallCommandLine(const std::vector<std::stri
 		}
 		const std::string& name = flag->name;
 		const std::string& value = flag->value;
-		const bool hasValue = flag->hasValue;
 		if (name == "help" || name == "json")
-		{
-			if (hasValue)
-				cl.errors.push_back("--" + name + " takes no value");
-			else
-				(name == "help" ? cl.help : cl.json) = true;
-			continue;
-		}
-		if (name == "joints-csv" || name == "history")
+			scene::setSwitch(*flag, name == "help" ? cl.help : cl.json, cl.errors);
+		else if (name == "joints-csv" || name == "history")
 		{
 			if (value.empty())
 				cl.errors.push_back("--" + name + " needs a value: --" + name + "=PATH");
 			else
 				(name == "history" ? cl.history_csv : cl.joints_csv) = value;
-			continue;
 		}
-		auto it = flags().find(name);
-		if (it == flags().end())
-			cl.errors.push_back("unknown flag --" + name + " (see --help)");
-		else if (!hasValue)
-			cl.errors.push_back("--" + name + " needs a value: --" + name + "=" + it->second.help);
-		else if (!it->second.set(cl.parameters, value))
-			cl.errors.push_back("--" + name + ": '" + value + "' is not valid; expected " + it->second.help);
+		else
+			scene::applyFlag(flags(), cl.parameters, *flag, cl.errors);
 	}
 	if (cl.help || !cl.errors.empty()) return cl;
 	const std::vector<std::string> invalid = validateWreckingBallParameters(cl.parameters);
@@ -142,7 +115,6 @@ std::string wreckingBallUsage()
 		"  --json  one JSON object on stdout\n"
 		"  --joints-csv=PATH  per-joint plastic rotations and energies (CSV)\n"
 		"  --history=PATH  energies per frame (CSV)\n";
-	for (const auto& [name, flag] : flags()) text += "  --" + name + "=" + flag.help + "\n";
-	return text;
+	return text + scene::usageOf(flags());
 }
 }  // namespace game

@@ -1,6 +1,6 @@
 #include "StructuresCommandLine.h"
 
-#include "scene/FlagArgument.h"
+#include "scene/FlagTable.h"
 
 #include <cerrno>
 #include <cstdlib>
@@ -26,40 +26,24 @@ bool parseMethod(const std::string& text, plastic::JointMethod& method)
 	return false;
 }
 
-// a flag of a scene's parameters P: how to set it from its text (empty for a flag without a value) and its help
-template <class P>
-struct Flag
-{
-	std::function<bool(P&, const std::string&)> set;
-	std::string help;
-	bool takesValue = true;
-};
+using scene::Flags;
 
 template <class P>
-using Flags = std::map<std::string, Flag<P>>;
-
-template <class P>
-Flag<P> number(double P::*field, const char* help)
+scene::Flag<P> number(double P::*field, const char* help)
 {
-	return {[field](P& p, const std::string& t)
-			{ return parseNumber(t, p.*field); },
-			help};
+	return scene::numberFlag(field, help);
 }
 
 template <class P>
-Flag<P> whole(int P::*field, const char* help)
+scene::Flag<P> whole(int P::*field, const char* help)
 {
-	return {[field](P& p, const std::string& t)
-			{ return parseInteger(t, p.*field); },
-			help};
+	return scene::wholeFlag(field, help);
 }
 
 template <class P>
-Flag<P> boolean(bool P::*field, const char* help)
+scene::Flag<P> boolean(bool P::*field, const char* help)
 {
-	return {[field](P& p, const std::string&)
-			{ return (p.*field = true); },
-			help, false};
+	return scene::switchFlag(field, help);
 }
 
 template <class P>
@@ -156,34 +140,12 @@ const Flags<DropWeightParameters>& dropWeightFlags()
 	return flags;
 }
 
-template <class P>
-void applyFlag(const Flags<P>& flags, P& p, const std::string& name, bool hasValue, const std::string& value, const std::string& scene,
-			   std::vector<std::string>& errors)
-{
-	auto it = flags.find(name);
-	if (it == flags.end())
-		errors.push_back("unknown flag --" + name + " for --scene=" + scene + " (see --help)");
-	else if (!it->second.takesValue && hasValue)
-		errors.push_back("--" + name + " takes no value");
-	else if (it->second.takesValue && !hasValue)
-		errors.push_back("--" + name + " needs a value: --" + name + "=" + it->second.help);
-	else if (!it->second.set(p, value))
-		errors.push_back("--" + name + ": '" + value + "' is not valid; expected " + it->second.help);
-}
-
-template <class P>
-std::string usageOf(const Flags<P>& flags)
-{
-	std::string text;
-	for (const auto& [name, flag] : flags) text += "  --" + name + (flag.takesValue ? "=" : "  ") + flag.help + "\n";
-	return text;
-}
 }  // namespace
 
 StructuresCommandLine parseStructuresCommandLine(const std::vector<std::string>& arguments)
 {
 	StructuresCommandLine cl;
-	std::vector<std::pair<std::string, std::pair<bool, std::string>>> flags;
+	std::vector<scene::FlagArgument> flags;
 	for (const std::string& argument : arguments)
 	{
 		const std::optional<scene::FlagArgument> flag = scene::splitFlagArgument(argument, cl.errors);
@@ -193,14 +155,8 @@ StructuresCommandLine parseStructuresCommandLine(const std::vector<std::string>&
 		}
 		const std::string& name = flag->name;
 		const std::string& value = flag->value;
-		const bool hasValue = flag->hasValue;
 		if (name == "help" || name == "json")
-		{
-			if (hasValue)
-				cl.errors.push_back("--" + name + " takes no value");
-			else
-				(name == "help" ? cl.help : cl.json) = true;
-		}
+			scene::setSwitch(*flag, name == "help" ? cl.help : cl.json, cl.errors);
 		else if (name == "scene")
 		{
 			if (value == "cantilever" || value == "portal" || value == "drop-weight")
@@ -209,7 +165,7 @@ StructuresCommandLine parseStructuresCommandLine(const std::vector<std::string>&
 				cl.errors.push_back("--scene: '" + value + "' is not valid; expected one of cantilever, portal, drop-weight");
 		}
 		else
-			flags.push_back({name, {hasValue, value}});
+			flags.push_back(*flag);
 	}
 	if (cl.help) return cl;
 	if (cl.scene.empty() && cl.errors.empty())
@@ -217,11 +173,12 @@ StructuresCommandLine parseStructuresCommandLine(const std::vector<std::string>&
 		cl.errors.push_back("--scene: missing; expected one of cantilever, portal, drop-weight");
 		return cl;
 	}
-	for (const auto& [name, v] : flags)
+	const std::string context = " for --scene=" + cl.scene;
+	for (const scene::FlagArgument& flag : flags)
 	{
-		if (cl.scene == "cantilever") applyFlag(cantileverFlags(), cl.cantilever, name, v.first, v.second, cl.scene, cl.errors);
-		if (cl.scene == "portal") applyFlag(portalFlags(), cl.portal, name, v.first, v.second, cl.scene, cl.errors);
-		if (cl.scene == "drop-weight") applyFlag(dropWeightFlags(), cl.dropWeight, name, v.first, v.second, cl.scene, cl.errors);
+		if (cl.scene == "cantilever") scene::applyFlag(cantileverFlags(), cl.cantilever, flag, cl.errors, context);
+		if (cl.scene == "portal") scene::applyFlag(portalFlags(), cl.portal, flag, cl.errors, context);
+		if (cl.scene == "drop-weight") scene::applyFlag(dropWeightFlags(), cl.dropWeight, flag, cl.errors, context);
 	}
 	if (!cl.errors.empty()) return cl;
 	std::vector<std::string> invalid;
@@ -238,12 +195,12 @@ std::string structuresUsage()
 		   "Runs a structure with a textbook answer headless and prints the simulated result beside the answer.\n"
 		   "--scene=cantilever: a tip-loaded cantilever (collapse at P = Mp / L; a dead load above it stops where\n"
 		   "P L sin(theta) = Mp theta)\n" +
-		   usageOf(cantileverFlags()) +
+		   scene::usageOf(cantileverFlags()) +
 		   "--scene=portal: a fixed-base portal frame under H at the left knee and V at mid-span, the load factor\n"
 		   "ramped until it collapses (beam V L/2 = 4 Mp, sway H h = 4 Mp, combined H h + V L/2 = 6 Mp)\n" +
-		   usageOf(portalFlags()) +
+		   scene::usageOf(portalFlags()) +
 		   "--scene=drop-weight: a ball strikes a simply supported or clamped beam at mid-span (kinetic energy\n"
 		   "after the impact = Mp x sum of hinge rotations)\n" +
-		   usageOf(dropWeightFlags());
+		   scene::usageOf(dropWeightFlags());
 }
 }  // namespace structures
