@@ -198,11 +198,7 @@ TEST(ToolkitCantilever, AGrowingLoadWakesASleepingMember)
 	for (bool throughPointLoad : {true, false})
 	{
 		Rig rig(1000);
-		BeamSpec spec;
-		spec.end_m = btVector3(2, 0, 0);
-		spec.segments = 4;
-		spec.joint.section = rectangle(0.05, 0.10);
-		spec.joint.material = steel();
+		const BeamSpec spec = cantileverSpec(rectangle(0.05, 0.10), JointMethod::PlasticHinge);
 		Beam beam(rig.world, spec, &rig.support);
 		const double mp = capacities(spec.joint.section, spec.joint.material).plastic_moment_y_nm;
 		btRigidBody* tip = beam.segments().back();
