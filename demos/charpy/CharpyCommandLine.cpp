@@ -2,22 +2,12 @@
 
 #include "scene/FlagTable.h"
 
-#include <cerrno>
-#include <cstdlib>
-#include <functional>
-#include <map>
-
 namespace
 {
-using scene::parseInteger;
 using scene::parseNumber;
 
-using Setter = std::function<bool(CharpyParameters&, const std::string&)>;
-
-Setter number(double CharpyParameters::*field)
-{
-	return [field](CharpyParameters& p, const std::string& text) { return parseNumber(text, p.*field); };
-}
+using scene::numberFlag;
+using scene::wholeFlag;
 
 const scene::Flags<CharpyParameters>& valueFlags()
 {
@@ -28,37 +18,37 @@ const scene::Flags<CharpyParameters>& valueFlags()
 						return m.has_value();
 					},
 					"NAME  joining method (see --list-methods), default plastic-hinge"}},
-		{"dt", {number(&CharpyParameters::dt_s), "SECONDS  frame step, default 1e-4"}},
-		{"auto-dt-coarse", {number(&CharpyParameters::auto_dt_coarse_s), "SECONDS  step far from contact with --auto-dt, default 5e-3"}},
-		{"contact-substep", {number(&CharpyParameters::contact_substep_s), "SECONDS  internal step in/near contact, 0 = off, default 1e-5"}},
-		{"iterations", {[](CharpyParameters& p, const std::string& t) { return parseInteger(t, p.solver_iterations); }, "N  solver iterations, default 10"}},
-		{"duration", {number(&CharpyParameters::duration_s), "SECONDS  simulated time, default 0.06"}},
-		{"fy", {number(&CharpyParameters::yield_stress_pa), "PA  yield stress, default 400e6"}},
-		{"youngs-modulus", {number(&CharpyParameters::youngs_modulus_pa), "PA  default 200e9"}},
-		{"density", {number(&CharpyParameters::density_kg_m3), "KG_M3  default 7800"}},
-		{"friction", {number(&CharpyParameters::friction), "MU  combined friction of specimen contacts, default 0"}},
-		{"max-plastic-rotation", {number(&CharpyParameters::max_plastic_rotation_rad), "RAD  breaks plastic joints, default 3"}},
-		{"parts", {[](CharpyParameters& p, const std::string& t) { return parseInteger(t, p.parts); }, "N  even number of specimen parts, default 2"}},
-		{"specimen-width", {number(&CharpyParameters::specimen_width_m), "M  default 0.01"}},
-		{"specimen-length", {number(&CharpyParameters::specimen_length_m), "M  default 0.055"}},
-		{"notch-depth", {number(&CharpyParameters::notch_depth_m), "M  default 0.002"}},
-		{"anvil-gap", {number(&CharpyParameters::anvil_gap_m), "M  default 0.04"}},
-		{"anvil-width", {number(&CharpyParameters::anvil_width_m), "M  default 0.04"}},
-		{"anvil-radius", {number(&CharpyParameters::anvil_radius_m), "M  radius of the anvils' inner edges (ISO 148-1: 0.001), 0 = sharp (default)"}},
-		{"anvil-taper", {number(&CharpyParameters::anvil_taper_rad), "RAD  taper of the gap behind rounded edges (ISO 148-1: 0.192), default 0"}},
-		{"striker-radius", {number(&CharpyParameters::striker_radius_m), "M  striker edge radius, 0 = flat nose (default)"}},
-		{"hammer-mass", {number(&CharpyParameters::hammer_mass_kg), "KG  default 19.5"}},
-		{"hammer-thickness", {number(&CharpyParameters::hammer_thickness_m), "M  0 = no hammer, default 0.02"}},
-		{"draft", {number(&CharpyParameters::hammer_draft_m), "M  striker nose, default 0.04"}},
-		{"impact-speed", {number(&CharpyParameters::impact_speed_m_s), "M_S  striker speed at impact, 0 = from --release-angle (default)"}},
+		{"dt", numberFlag(&CharpyParameters::dt_s, "SECONDS  frame step, default 1e-4")},
+		{"auto-dt-coarse", numberFlag(&CharpyParameters::auto_dt_coarse_s, "SECONDS  step far from contact with --auto-dt, default 5e-3")},
+		{"contact-substep", numberFlag(&CharpyParameters::contact_substep_s, "SECONDS  internal step in/near contact, 0 = off, default 1e-5")},
+		{"iterations", wholeFlag(&CharpyParameters::solver_iterations, "N  solver iterations, default 10")},
+		{"duration", numberFlag(&CharpyParameters::duration_s, "SECONDS  simulated time, default 0.06")},
+		{"fy", numberFlag(&CharpyParameters::yield_stress_pa, "PA  yield stress, default 400e6")},
+		{"youngs-modulus", numberFlag(&CharpyParameters::youngs_modulus_pa, "PA  default 200e9")},
+		{"density", numberFlag(&CharpyParameters::density_kg_m3, "KG_M3  default 7800")},
+		{"friction", numberFlag(&CharpyParameters::friction, "MU  combined friction of specimen contacts, default 0")},
+		{"max-plastic-rotation", numberFlag(&CharpyParameters::max_plastic_rotation_rad, "RAD  breaks plastic joints, default 3")},
+		{"parts", wholeFlag(&CharpyParameters::parts, "N  even number of specimen parts, default 2")},
+		{"specimen-width", numberFlag(&CharpyParameters::specimen_width_m, "M  default 0.01")},
+		{"specimen-length", numberFlag(&CharpyParameters::specimen_length_m, "M  default 0.055")},
+		{"notch-depth", numberFlag(&CharpyParameters::notch_depth_m, "M  default 0.002")},
+		{"anvil-gap", numberFlag(&CharpyParameters::anvil_gap_m, "M  default 0.04")},
+		{"anvil-width", numberFlag(&CharpyParameters::anvil_width_m, "M  default 0.04")},
+		{"anvil-radius", numberFlag(&CharpyParameters::anvil_radius_m, "M  radius of the anvils' inner edges (ISO 148-1: 0.001), 0 = sharp (default)")},
+		{"anvil-taper", numberFlag(&CharpyParameters::anvil_taper_rad, "RAD  taper of the gap behind rounded edges (ISO 148-1: 0.192), default 0")},
+		{"striker-radius", numberFlag(&CharpyParameters::striker_radius_m, "M  striker edge radius, 0 = flat nose (default)")},
+		{"hammer-mass", numberFlag(&CharpyParameters::hammer_mass_kg, "KG  default 19.5")},
+		{"hammer-thickness", numberFlag(&CharpyParameters::hammer_thickness_m, "M  0 = no hammer, default 0.02")},
+		{"draft", numberFlag(&CharpyParameters::hammer_draft_m, "M  striker nose, default 0.04")},
+		{"impact-speed", numberFlag(&CharpyParameters::impact_speed_m_s, "M_S  striker speed at impact, 0 = from --release-angle (default)")},
 		{"release-angle", {[](CharpyParameters& p, const std::string& text) {
 							   p.impact_speed_m_s = 0;  // the hammer starts from this angle instead
 							   return parseNumber(text, p.release_angle_rad);
 						   },
 						   "RAD  release from this angle (instead of --impact-speed), default 2.8"}},
-		{"initial-energy", {number(&CharpyParameters::initial_energy_j), "J  hammer energy, overrides --impact-speed and --release-angle"}},
-		{"brittle-force", {number(&CharpyParameters::brittle_breaking_force_n), "N  breaking force of method brittle, default 2e4"}},
-		{"min-steps-per-period", {number(&CharpyParameters::min_steps_per_period), "STEPS  per period for elastic DOFs, default 25"}},
+		{"initial-energy", numberFlag(&CharpyParameters::initial_energy_j, "J  hammer energy, overrides --impact-speed and --release-angle")},
+		{"brittle-force", numberFlag(&CharpyParameters::brittle_breaking_force_n, "N  breaking force of method brittle, default 2e4")},
+		{"min-steps-per-period", numberFlag(&CharpyParameters::min_steps_per_period, "STEPS  per period for elastic DOFs, default 25")},
 	};
 	return flags;
 }

@@ -2,11 +2,6 @@
 
 #include "scene/FlagTable.h"
 
-#include <cerrno>
-#include <cstdlib>
-#include <functional>
-#include <map>
-
 namespace game
 {
 namespace
@@ -14,11 +9,8 @@ namespace
 using scene::parseInteger;
 using scene::parseNumber;
 
-using Flag = scene::Flag<WreckingBallParameters>;
-
-Flag number(double WreckingBallParameters::*field, const char* help) { return scene::numberFlag(field, help); }
-
-Flag whole(int WreckingBallParameters::*field, const char* help) { return scene::wholeFlag(field, help); }
+using scene::numberFlag;
+using scene::wholeFlag;
 
 const scene::Flags<WreckingBallParameters>& flags()
 {
@@ -45,31 +37,31 @@ const scene::Flags<WreckingBallParameters>& flags()
 		{"iterations", {[](P& p, const std::string& t)
 						{ return parseInteger(t, p.solver.iterations); },
 						"N  solver iterations, default 10"}},
-		{"frame-rate", number(&P::frame_rate_hz, "HZ  frames per second, default 60")},
-		{"duration", number(&P::duration_s, "SECONDS  simulated, default 3")},
-		{"gravity", number(&P::gravity_m_s2, "M_S2  default 9.81")},
-		{"span", number(&P::span_m, "M  default 4")},
-		{"height", number(&P::height_m, "M  default 3")},
-		{"storeys", whole(&P::storeys, "N  storeys of the frame, default 1")},
-		{"bays", whole(&P::bays, "N  bays of the frame, default 1")},
-		{"column-segments", whole(&P::column_segments, "N  default 4")},
-		{"beam-segments", whole(&P::beam_segments, "N  default 4")},
-		{"section-depth", number(&P::section_depth_m, "M  I section depth, default 0.2")},
-		{"flange-width", number(&P::flange_width_m, "M  default 0.1")},
-		{"web-thickness", number(&P::web_thickness_m, "M  default 0.0056")},
-		{"flange-thickness", number(&P::flange_thickness_m, "M  default 0.0085")},
-		{"fy", number(&P::yield_stress_pa, "PA  yield stress, default 355e6 (Mp = 74.4 kN m)")},
-		{"youngs-modulus", number(&P::youngs_modulus_pa, "PA  default 210e9")},
-		{"density", number(&P::density_kg_m3, "KG_M3  default 7850")},
-		{"max-plastic-rotation", number(&P::max_plastic_rotation_rad, "RAD  a joint breaks past this accumulated plastic rotation, default 0.2")},
-		{"ball-mass", number(&P::ball_mass_kg, "KG  default 2000")},
-		{"ball-radius", number(&P::ball_radius_m, "M  default 0.4")},
-		{"chain-length", number(&P::chain_length_m, "M  pivot to the ball's surface, default 5")},
-		{"chain-links", whole(&P::chain_links, "N  default 8")},
-		{"chain-mass", number(&P::chain_mass_kg, "KG  default 80")},
-		{"release-angle", number(&P::release_angle_rad, "RAD  from the vertical, default 1")},
-		{"impact-height", number(&P::impact_height_m, "M  where the ball meets the left column, default 1.5")},
-		{"ball-friction", number(&P::ball_friction, "COEFFICIENT  default 0.5")},
+		{"frame-rate", numberFlag(&P::frame_rate_hz, "HZ  frames per second, default 60")},
+		{"duration", numberFlag(&P::duration_s, "SECONDS  simulated, default 3")},
+		{"gravity", numberFlag(&P::gravity_m_s2, "M_S2  default 9.81")},
+		{"span", numberFlag(&P::span_m, "M  default 4")},
+		{"height", numberFlag(&P::height_m, "M  default 3")},
+		{"storeys", wholeFlag(&P::storeys, "N  storeys of the frame, default 1")},
+		{"bays", wholeFlag(&P::bays, "N  bays of the frame, default 1")},
+		{"column-segments", wholeFlag(&P::column_segments, "N  default 4")},
+		{"beam-segments", wholeFlag(&P::beam_segments, "N  default 4")},
+		{"section-depth", numberFlag(&P::section_depth_m, "M  I section depth, default 0.2")},
+		{"flange-width", numberFlag(&P::flange_width_m, "M  default 0.1")},
+		{"web-thickness", numberFlag(&P::web_thickness_m, "M  default 0.0056")},
+		{"flange-thickness", numberFlag(&P::flange_thickness_m, "M  default 0.0085")},
+		{"fy", numberFlag(&P::yield_stress_pa, "PA  yield stress, default 355e6 (Mp = 74.4 kN m)")},
+		{"youngs-modulus", numberFlag(&P::youngs_modulus_pa, "PA  default 210e9")},
+		{"density", numberFlag(&P::density_kg_m3, "KG_M3  default 7850")},
+		{"max-plastic-rotation", numberFlag(&P::max_plastic_rotation_rad, "RAD  a joint breaks past this accumulated plastic rotation, default 0.2")},
+		{"ball-mass", numberFlag(&P::ball_mass_kg, "KG  default 2000")},
+		{"ball-radius", numberFlag(&P::ball_radius_m, "M  default 0.4")},
+		{"chain-length", numberFlag(&P::chain_length_m, "M  pivot to the ball's surface, default 5")},
+		{"chain-links", wholeFlag(&P::chain_links, "N  default 8")},
+		{"chain-mass", numberFlag(&P::chain_mass_kg, "KG  default 80")},
+		{"release-angle", numberFlag(&P::release_angle_rad, "RAD  from the vertical, default 1")},
+		{"impact-height", numberFlag(&P::impact_height_m, "M  where the ball meets the left column, default 1.5")},
+		{"ball-friction", numberFlag(&P::ball_friction, "COEFFICIENT  default 0.5")},
 	};
 	return f;
 }

@@ -2,11 +2,6 @@
 
 #include "scene/FlagTable.h"
 
-#include <cerrno>
-#include <cstdlib>
-#include <functional>
-#include <map>
-
 namespace structures
 {
 namespace
@@ -27,24 +22,9 @@ bool parseMethod(const std::string& text, plastic::JointMethod& method)
 }
 
 using scene::Flags;
-
-template <class P>
-scene::Flag<P> number(double P::*field, const char* help)
-{
-	return scene::numberFlag(field, help);
-}
-
-template <class P>
-scene::Flag<P> whole(int P::*field, const char* help)
-{
-	return scene::wholeFlag(field, help);
-}
-
-template <class P>
-scene::Flag<P> boolean(bool P::*field, const char* help)
-{
-	return scene::switchFlag(field, help);
-}
+using scene::numberFlag;
+using scene::switchFlag;
+using scene::wholeFlag;
 
 template <class P>
 Flags<P> commonFlags()
@@ -67,25 +47,25 @@ Flags<P> commonFlags()
 	f["erp"] = {[](P& p, const std::string& t)
 				{ return parseNumber(t, p.solver.world.erp); },
 				"FRACTION  the joints' error reduction parameter, default 0.2 (Bullet's)"};
-	f["section-width"] = number(&P::section_width_m, "M  rectangle along the bending axis, default 0.05");
-	f["section-depth"] = number(&P::section_depth_m, "M  rectangle in the bending plane, default 0.1");
-	f["fy"] = number(&P::yield_stress_pa, "PA  yield stress, default 400e6 (Mp = fy b d^2 / 4 = 50 kN m)");
-	f["youngs-modulus"] = number(&P::youngs_modulus_pa, "PA  default 200e9");
-	f["density"] = number(&P::density_kg_m3, "KG_M3  default 7800");
-	f["duration"] = number(&P::duration_s, "SECONDS  simulated time at most");
+	f["section-width"] = numberFlag(&P::section_width_m, "M  rectangle along the bending axis, default 0.05");
+	f["section-depth"] = numberFlag(&P::section_depth_m, "M  rectangle in the bending plane, default 0.1");
+	f["fy"] = numberFlag(&P::yield_stress_pa, "PA  yield stress, default 400e6 (Mp = fy b d^2 / 4 = 50 kN m)");
+	f["youngs-modulus"] = numberFlag(&P::youngs_modulus_pa, "PA  default 200e9");
+	f["density"] = numberFlag(&P::density_kg_m3, "KG_M3  default 7800");
+	f["duration"] = numberFlag(&P::duration_s, "SECONDS  simulated time at most");
 	return f;
 }
 
 template <class P>
 void addRampFlags(Flags<P>& f, const char* rateHelp)
 {
-	f["ramp-rate"] = number(&P::ramp_rate_per_s, rateHelp);
-	f["fast-ramp-rate"] = number(&P::fast_ramp_rate_per_s, "1/S  load factor rate up to --slow-from, default 0.2");
-	f["slow-from"] = number(&P::slow_from_fraction, "FRACTION  of the plastic-analysis collapse factor where the slow ramp starts, default 0.9");
-	f["collapse-rate"] = number(&P::collapse_rate_rad_s, "RAD_S  a joint turning faster (over --rate-window) is the collapse, default 0.05");
-	f["rate-window"] = number(&P::rate_window_s, "SECONDS  default 0.1");
-	f["mechanism-rotation"] = number(&P::mechanism_rotation_rad, "RAD  a held load that turns the mechanism this far is the collapse, default 0.05");
-	f["hold"] = number(&P::hold_s, "SECONDS  how long the load is held before it rises again, default 2");
+	f["ramp-rate"] = numberFlag(&P::ramp_rate_per_s, rateHelp);
+	f["fast-ramp-rate"] = numberFlag(&P::fast_ramp_rate_per_s, "1/S  load factor rate up to --slow-from, default 0.2");
+	f["slow-from"] = numberFlag(&P::slow_from_fraction, "FRACTION  of the plastic-analysis collapse factor where the slow ramp starts, default 0.9");
+	f["collapse-rate"] = numberFlag(&P::collapse_rate_rad_s, "RAD_S  a joint turning faster (over --rate-window) is the collapse, default 0.05");
+	f["rate-window"] = numberFlag(&P::rate_window_s, "SECONDS  default 0.1");
+	f["mechanism-rotation"] = numberFlag(&P::mechanism_rotation_rad, "RAD  a held load that turns the mechanism this far is the collapse, default 0.05");
+	f["hold"] = numberFlag(&P::hold_s, "SECONDS  how long the load is held before it rises again, default 2");
 }
 
 const Flags<CantileverParameters>& cantileverFlags()
@@ -95,10 +75,10 @@ const Flags<CantileverParameters>& cantileverFlags()
 		using P = CantileverParameters;
 		Flags<P> f = commonFlags<P>();
 		addRampFlags(f, "1/S  > 0: ramp the load ratio and find the collapse; 0 (default): constant --load-ratio");
-		f["length"] = number(&P::length_m, "M  default 2");
-		f["segments"] = whole(&P::segments, "N  default 4");
-		f["load-ratio"] = number(&P::load_ratio, "P_L_OVER_MP  constant tip load, default 1.5");
-		f["follower"] = boolean(&P::follower_load, "the load turns with the tip (default: dead load along -y)");
+		f["length"] = numberFlag(&P::length_m, "M  default 2");
+		f["segments"] = wholeFlag(&P::segments, "N  default 4");
+		f["load-ratio"] = numberFlag(&P::load_ratio, "P_L_OVER_MP  constant tip load, default 1.5");
+		f["follower"] = switchFlag(&P::follower_load, "the load turns with the tip (default: dead load along -y)");
 		return f;
 	}();
 	return flags;
@@ -111,13 +91,13 @@ const Flags<PortalParameters>& portalFlags()
 		using P = PortalParameters;
 		Flags<P> f = commonFlags<P>();
 		addRampFlags(f, "1/S  load factor rate from --slow-from on, default 0.02; 0: constant --load-factor");
-		f["load-factor"] = number(&P::load_factor, "LAMBDA  constant load factor when --ramp-rate=0, default 0.9");
-		f["span"] = number(&P::span_m, "M  L, default 4");
-		f["height"] = number(&P::height_m, "M  h, default 3");
-		f["column-segments"] = whole(&P::column_segments, "N  default 2");
-		f["beam-segments"] = whole(&P::beam_segments, "N  even, default 2");
-		f["horizontal-load"] = number(&P::horizontal_load_n, "N  H at the left knee at load factor 1, default 50e3");
-		f["vertical-load"] = number(&P::vertical_load_n, "N  V at mid-span at load factor 1, default 75e3");
+		f["load-factor"] = numberFlag(&P::load_factor, "LAMBDA  constant load factor when --ramp-rate=0, default 0.9");
+		f["span"] = numberFlag(&P::span_m, "M  L, default 4");
+		f["height"] = numberFlag(&P::height_m, "M  h, default 3");
+		f["column-segments"] = wholeFlag(&P::column_segments, "N  default 2");
+		f["beam-segments"] = wholeFlag(&P::beam_segments, "N  even, default 2");
+		f["horizontal-load"] = numberFlag(&P::horizontal_load_n, "N  H at the left knee at load factor 1, default 50e3");
+		f["vertical-load"] = numberFlag(&P::vertical_load_n, "N  V at mid-span at load factor 1, default 75e3");
 		return f;
 	}();
 	return flags;
@@ -129,12 +109,12 @@ const Flags<DropWeightParameters>& dropWeightFlags()
 	{
 		using P = DropWeightParameters;
 		Flags<P> f = commonFlags<P>();
-		f["clamped"] = boolean(&P::clamped, "both ends clamped by plastic joints (default: simply supported)");
-		f["span"] = number(&P::span_m, "M  L, default 2");
-		f["segments"] = whole(&P::segments, "N  even, default 2");
-		f["weight-mass"] = number(&P::weight_mass_kg, "KG  G, default 1000");
-		f["weight-radius"] = number(&P::weight_radius_m, "M  default 0.05");
-		f["impact-speed"] = number(&P::impact_speed_m_s, "M_S  v0, default 4.5");
+		f["clamped"] = switchFlag(&P::clamped, "both ends clamped by plastic joints (default: simply supported)");
+		f["span"] = numberFlag(&P::span_m, "M  L, default 2");
+		f["segments"] = wholeFlag(&P::segments, "N  even, default 2");
+		f["weight-mass"] = numberFlag(&P::weight_mass_kg, "KG  G, default 1000");
+		f["weight-radius"] = numberFlag(&P::weight_radius_m, "M  default 0.05");
+		f["impact-speed"] = numberFlag(&P::impact_speed_m_s, "M_S  v0, default 4.5");
 		return f;
 	}();
 	return flags;
