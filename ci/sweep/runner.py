@@ -71,12 +71,34 @@ def run_one(runner, configuration, timeout_s, accept_codes=(0,), keep_json=False
     return row
 
 
+def journal_path(out_csv):
+    """Where run_all appends each finished row (one JSON line) until it writes the CSV whole."""
+    return out_csv + ".journal"
+
+
+def read_journal(out_csv):
+    """Rows an interrupted sweep left in its journal, their values as the CSV would hold them (text)."""
+    path = journal_path(out_csv)
+    if not os.path.exists(path):
+        return []
+    rows = []
+    with open(path) as f:
+        for line in f:
+            try:
+                row = json.loads(line)
+            except ValueError:
+                continue  # the last line of a sweep killed while it wrote
+            rows.append({k: "" if v is None else str(v) for k, v in row.items()})
+    return rows
+
+
 def run_all(runner, configurations, out_csv, jobs, timeout_s=600, first_columns=("key",), log=sys.stderr, accept_codes=(0,), keep_json=False):
     """Runs every configuration not yet in out_csv, keeping the finished rows; returns all rows.
 
-    out_csv is rewritten whole after each finished run, so an interrupted sweep loses nothing
-    and the next call resumes where it stopped. A row is reused only if the same runner binary
-    made it (runner_id): after a rebuild that changed the runner every row is run again.
+    Each finished run is appended to out_csv's journal (journal_path: one JSON line, cheap however many rows there
+    are) and out_csv is written whole when the sweep ends, so an interrupted sweep loses nothing: the next call takes
+    the journal's rows as finished, folds them into the CSV and resumes where it stopped. A row is reused only if the
+    same runner binary made it (runner_id): after a rebuild that changed the runner every row is run again.
     """
     if not os.access(runner, os.X_OK):
         raise SystemExit(f"runner {runner} not found or not executable (build it: cmake --build build --target charpy)")
@@ -84,23 +106,34 @@ def run_all(runner, configurations, out_csv, jobs, timeout_s=600, first_columns=
     if len(set(keys)) != len(keys):
         raise SystemExit("configurations have duplicate keys")
     expected_id = {c["key"]: runner_id(c.get("runner") or runner) for c in configurations}
-    rows = [r for r in csvfile.read_rows(out_csv)
-            if r.get("key") in expected_id and not r.get("failure") and r.get("runner_id") == expected_id[r["key"]]]
+    by_key = {}
+    for r in csvfile.read_rows(out_csv) + read_journal(out_csv):  # a journal's row is newer than the CSV's
+        if r.get("key") in expected_id and not r.get("failure") and r.get("runner_id") == expected_id[r["key"]]:
+            by_key[r["key"]] = r
+    order = {k: i for i, k in enumerate(keys)}
+    rows = sorted(by_key.values(), key=lambda r: order[r["key"]])
+    journal = journal_path(out_csv)
+    if os.path.exists(journal):
+        csvfile.write_rows(out_csv, rows, first_columns)
+        os.remove(journal)
     finished = {r["key"] for r in rows}
     todo = [c for c in configurations if c["key"] not in finished]
     total = len(configurations)
     print(f"{len(finished)}/{total} already in {out_csv}, {len(todo)} to run on {jobs} jobs", file=log)
-    order = {k: i for i, k in enumerate(keys)}
     start = time.monotonic()
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
         futures = [pool.submit(run_one, runner, c, timeout_s, accept_codes, keep_json) for c in todo]
         for n, future in enumerate(concurrent.futures.as_completed(futures), 1):
-            rows.append(future.result())
-            rows.sort(key=lambda r: order[r["key"]])
-            csvfile.write_rows(out_csv, rows, first_columns)
+            row = future.result()
+            rows.append(row)
+            with open(journal, "a") as f:
+                f.write(json.dumps(row) + "\n")
             elapsed = time.monotonic() - start
             eta = elapsed / n * (len(todo) - n)
             print(f"\r{len(finished) + n}/{total} done, {elapsed:.0f} s, ETA {eta:.0f} s   ", end="", file=log, flush=True)
     if todo:
         print(file=log)
+        rows.sort(key=lambda r: order[r["key"]])
+        csvfile.write_rows(out_csv, rows, first_columns)
+        os.remove(journal)
     return rows

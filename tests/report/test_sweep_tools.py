@@ -1,5 +1,6 @@
 """The sweep's CSV, shards, merge and resume, and the report generator, on tiny sweeps with a fake runner."""
 import csv
+import json
 import os
 import subprocess
 import sys
@@ -44,6 +45,20 @@ class SweepTest(unittest.TestCase):
         self.assertEqual(len(self.calls()), len(self.configurations), "finished runs were repeated")
         self.assertEqual(len(rows), len(self.configurations))
         self.assertEqual(csvfile.read_rows(out)[:2], before)
+
+    def test_an_interrupted_sweeps_journal_counts_as_finished(self):
+        # a sweep killed after its third run: two rows in the CSV, the third only in the journal (half a line after it)
+        out = os.path.join(self.dir, "sweep.csv")
+        runner.run_all(FAKE, self.configurations[:2], out, jobs=1, log=open(os.devnull, "w"))
+        third = runner.run_one(FAKE, self.configurations[2], 600)
+        with open(runner.journal_path(out), "w") as f:
+            f.write(json.dumps(third) + "\n" + '{"key": "half')
+        rows = runner.run_all(FAKE, self.configurations, out, jobs=2, log=open(os.devnull, "w"))
+        self.assertEqual(len(self.calls()), len(self.configurations), "the journal's run was repeated")
+        self.assertEqual(len(rows), len(self.configurations))
+        self.assertEqual([r["key"] for r in csvfile.read_rows(out)], [c["key"] for c in self.configurations])
+        self.assertEqual(csvfile.read_rows(out)[2]["energy_loss_J"], str(third["energy_loss_J"]))
+        self.assertFalse(os.path.exists(runner.journal_path(out)))
 
     def test_rows_of_another_runner_build_are_run_again(self):
         out = os.path.join(self.dir, "sweep.csv")
