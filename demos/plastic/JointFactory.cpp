@@ -95,6 +95,11 @@ static void setYieldSurface(bt6DofElasticPlastic2Constraint& c, const JointSpec&
 	{
 		c.setYieldSurface(C::YIELD_LINEAR_QUADRATIC, 3, 2);  // u0 = My / Mp_y, u1 = N / Np
 	}
+	if (spec.yield_surface == YieldSurface::BendingAxial && spec.section.axial_interaction == AxialInteraction::ISection)
+	{
+		c.setYieldSurfaceISection(btScalar(webAxialFraction(spec.section)), btScalar(flangeMomentFraction(spec.section)));
+		c.setYieldSurface(C::YIELD_I_SECTION_AXIAL, 3, 2);
+	}
 	if (spec.yield_surface == YieldSurface::BendingTorsion && spec.section.torsion_interaction == TorsionInteraction::Circle)
 	{
 		c.setYieldSurface(C::YIELD_CIRCLE, 3, 5);  // u0 = My / Mp_y, u1 = T / Tp
@@ -158,7 +163,7 @@ std::vector<std::string> validate(const JointSpec& spec)
 	}
 	if (spec.yield_surface == YieldSurface::BendingAxial && spec.section.axial_interaction == AxialInteraction::None)
 	{
-		errors.push_back("yield_surface: bending-axial needs a section whose interaction of moment and axial force is known (rectangle), not a " +
+		errors.push_back("yield_surface: bending-axial needs a section whose interaction of moment and axial force is known (rectangle, I section), not a " +
 						 (spec.section.shape.empty() ? std::string("section without a shape") : spec.section.shape));
 	}
 	if (spec.yield_surface == YieldSurface::BendingTorsion && spec.section.torsion_interaction == TorsionInteraction::None)

@@ -30,6 +30,20 @@ SectionProperties refused(const char* shape, std::string error)
 }
 }  // namespace
 
+double webAxialFraction(const SectionProperties& section)
+{
+	if (section.axial_interaction != AxialInteraction::ISection) return 1.0;
+	const double webArea_m2 = section.web_thickness_m * (section.depth_m - 2.0 * section.flange_thickness_m);
+	return webArea_m2 / section.area_m2;
+}
+
+double flangeMomentFraction(const SectionProperties& section)
+{
+	if (section.axial_interaction != AxialInteraction::ISection) return 0.0;
+	const double tf = section.flange_thickness_m;
+	return section.width_m * tf * (section.depth_m - tf) / section.plastic_modulus_y_m3;
+}
+
 std::vector<std::string> validate(const SectionProperties& section)
 {
 	if (section.error.empty()) return {};
@@ -147,6 +161,7 @@ SectionProperties iSection(double depth_m, double flange_width_m, double web_thi
 	s.flange_thickness_m = tf;
 	s.web_thickness_m = tw;
 	s.biaxial_interaction = BiaxialInteraction::ISection;
+	s.axial_interaction = AxialInteraction::ISection;
 	s.width_m = b;
 	s.depth_m = h;
 	s.area_m2 = 2.0 * b * tf + hw * tw;

@@ -29,6 +29,8 @@ enum class AxialInteraction
 {
 	None,       // not known: each yields alone
 	Rectangle,  // u + n^2 = 1 (the stress blocks of a fully plastic rectangle)
+	ISection,   // strong-axis bending: u = 1 - (1 - f) (n / w)^2 while the neutral axis is in the web (n <= w), then
+				// the flanges' stress blocks (w = webAxialFraction, f = flangeMomentFraction of the section)
 };
 
 // The fully plastic interaction of the main bending moment (u = My / Mp_y) with the torque (t = T / Tp): the curve on
@@ -61,6 +63,11 @@ struct SectionProperties
 	TorsionInteraction torsion_interaction = TorsionInteraction::None;
 	std::string error;  // empty for a valid section; else why the factory refused it (its properties are 0)
 };
+
+// An I section's moment-axial curve (AxialInteraction::ISection): the web's share of the area, t_w (h - 2 t_f) / A,
+// and the flanges' share of the plastic modulus about y, b t_f (h - t_f) / W_pl_y. 1 and 0 for the other shapes.
+double webAxialFraction(const SectionProperties& section);
+double flangeMomentFraction(const SectionProperties& section);
 
 // the section's error, if it has one (a message naming the parameter and its valid range)
 std::vector<std::string> validate(const SectionProperties& section);

@@ -163,6 +163,56 @@ TEST(YieldSurface, GaugesAreOneOnTheSectionsInteractionCurves)
 	EXPECT_NEAR(bt6DofElasticPlastic2Constraint::getYieldSurfaceGauge(bt6DofElasticPlastic2Constraint::YIELD_BOX, btScalar(0.8), btScalar(-0.9)), 0.9, 1e-6);
 }
 
+// The I section's moment-axial curve against its stress blocks, worked here from the dimensions of an IPE 300
+// (h 300, b 150, t_w 7.1, t_f 10.7 mm; no fillets): with the neutral axis at z0 from the centre, everything between
+// -z0 and z0 carries the axial force and everything outside it the moment. The constraint gets only the two fractions.
+TEST(YieldSurface, ISectionGaugeIsOneOnItsStressBlocks)
+{
+	const double h = 0.3, b = 0.15, tw = 0.0071, tf = 0.0107, hw = h - 2 * tf;
+	const double area = 2 * b * tf + tw * hw, plasticModulus = b * tf * (h - tf) + tw * hw * hw / 4;
+	const double web = tw * hw / area, flange = b * tf * (h - tf) / plasticModulus;
+	ASSERT_TRUE(bt6DofElasticPlastic2Constraint::isValidISectionShape(btScalar(web), btScalar(flange)));
+	PhysicsWorld w;
+	btRigidBody* fixed = w.addBox(btVector3(0.1, 0.1, 0.1), 1.0, btVector3(0, 0, 0));
+	bt6DofElasticPlastic2Constraint c(*fixed, btTransform::getIdentity());
+	c.setYieldSurfaceISection(btScalar(web), btScalar(flange));
+	c.setYieldSurface(bt6DofElasticPlastic2Constraint::YIELD_I_SECTION_AXIAL, 4, 0);
+	int points = 0;
+	for (double z0 = 0; z0 < h / 2; z0 += h / 2 / 40)
+	{
+		double n, m;  // the blocks' axial force (per fy) and moment (per fy) outside +-z0
+		if (z0 <= hw / 2)
+		{
+			n = 2 * z0 * tw;
+			m = plasticModulus - tw * z0 * z0;
+		}
+		else
+		{
+			n = tw * hw + 2 * b * (z0 - hw / 2);
+			m = b * (h / 2 - z0) * (h / 2 + z0);
+		}
+		const double u0 = m / plasticModulus, u1 = n / area;
+		EXPECT_NEAR(double(c.getYieldSurfaceGauge(btScalar(u0), btScalar(u1))), 1.0, 1e-5) << "z0 = " << z0 << ": (" << u0 << ", " << u1 << ")";
+		EXPECT_NEAR(double(c.getYieldSurfaceGauge(btScalar(-0.5 * u0), btScalar(0.5 * u1))), 0.5, 1e-5) << "half of it, any sign";
+		points++;
+	}
+	EXPECT_EQ(points, 40);
+	// the static gauge without a shape is the rectangle's: u0 + u1^2 = 1
+	EXPECT_NEAR(bt6DofElasticPlastic2Constraint::getYieldSurfaceGauge(bt6DofElasticPlastic2Constraint::YIELD_I_SECTION_AXIAL, btScalar(0.64), btScalar(0.6)), 1.0, 1e-6);
+	// the pairs that are no section's are refused: no flanges with a flange moment, flanges without one, a web share
+	// too small for the flanges' moment (r < 0), NaN
+	const double refused[][2] = {{1.0, 0.3}, {0.5, 0.0}, {0.2, 0.2}, {0.0, 0.5}, {1.2, 0.5}, {0.5, 1.0}, {std::nan(""), 0.5}};
+	for (const auto& pair : refused)
+	{
+		EXPECT_FALSE(bt6DofElasticPlastic2Constraint::isValidISectionShape(btScalar(pair[0]), btScalar(pair[1]))) << pair[0] << ", " << pair[1];
+#ifdef NDEBUG
+		c.setYieldSurfaceISection(btScalar(pair[0]), btScalar(pair[1]));
+		EXPECT_EQ(double(c.getWebAxialFraction()), double(btScalar(web))) << "release builds keep the previous shape";
+#endif
+	}
+	EXPECT_TRUE(bt6DofElasticPlastic2Constraint::isValidISectionShape(btScalar(1.0), btScalar(0.0))) << "the rectangle";
+}
+
 // A round section's moment at 45 degrees yields at Mp (the box held it to 1.41 Mp).
 TEST(YieldSurface, CircleYieldsAtThePlasticMomentInEveryDirection)
 {

@@ -16,6 +16,7 @@
 #include "plastic/BeamBuilder.h"
 #include "CantileverRig.h"
 #include "plastic/EnergyLedger.h"
+#include "plastic/SectionResponse.h"
 
 using namespace plastic;
 
@@ -243,9 +244,10 @@ struct AxialOutcome
 	Energies energies;
 };
 
-AxialOutcome loadWithAxialForce(YieldSurface surface, double axialFraction, double momentFraction, double seconds, double untilRotation_rad)
+AxialOutcome loadWithAxialForce(YieldSurface surface, double axialFraction, double momentFraction, double seconds, double untilRotation_rad,
+								const SectionProperties& section = rectangle(0.05, 0.10))
 {
-	LoadedCantilever c(rectangle(0.05, 0.10), surface, JointMethod::ElasticPlastic2, sideLoad_n(rectangle(0.05, 0.10), momentFraction));
+	LoadedCantilever c(section, surface, JointMethod::ElasticPlastic2, sideLoad_n(section, momentFraction));
 	const double N = axialFraction * c.cap.axial_n;
 	double thrustWork_j = 0;
 	AxialOutcome o;
@@ -301,6 +303,42 @@ TEST(CombinedLoad, BendingWithAxialForceYieldsOnTheRectangleCurveWithNormalFlow)
 	// control: the per-DOF box holds the same load (M = 0.66 Mp < Mp, N = 0.6 Np < Np)
 	const AxialOutcome box = loadWithAxialForce(YieldSurface::PerDof, n, 1.03 * m, 1.0, 0.1);
 	EXPECT_LT(box.rootRotation_rad, 1e-3);
+}
+
+// Bending with axial force on an I section (200 x 100 mm, web 5.6 mm, flanges 8.5 mm, about its strong axis). The
+// answer comes from the section's layers, not from the joint's curve: a fully plastic section whose neutral axis is at
+// z0 carries the axial force and moment of its stress blocks (SectionResponse at a curvature so large that the elastic
+// core is 0.4 mm thick), and normality makes the hinge shorten by z0 per rad of rotation (dM/dN = -z0 along the
+// curve). With the neutral axis in the web (z0 = 0.04 m: N = 0.164 Np, M = 0.957 Mp) and in a flange (z0 = 0.095 m:
+// N = 0.633 Np, M = 0.465 Mp): the root holds at 0.97 of that moment and collapses at 1.03, and shortens at the rate
+// z0. The per-DOF box holds both; the rectangle's curve (u + n^2 = 1) would hold 0.599 Mp at 0.633 Np, 29 % more.
+TEST(CombinedLoad, BendingWithAxialForceYieldsOnTheISectionCurveWithNormalFlow)
+{
+	const SectionProperties iSec = iSection(0.2, 0.1, 0.0056, 0.0085);
+	const SectionCapacities cap = capacities(iSec, steel());
+	const std::vector<SectionLayer> layers = sectionLayers(iSec);
+	const StressStrainCurve curve = elasticPerfectlyPlastic(steel());
+	for (double z0_m : {0.04, 0.095})
+	{
+		const double curvature_1_m = 10.0;
+		const SectionForces f = sectionForces(layers, curve, curvature_1_m * z0_m, curvature_1_m);
+		const double n = f.axial_n / cap.axial_n, m = std::fabs(f.moment_nm) / cap.plastic_moment_y_nm;
+		const AxialOutcome inside = loadWithAxialForce(YieldSurface::BendingAxial, n, 0.97 * m, 1.0, 0.1, iSec);
+		EXPECT_LT(inside.rootRotation_rad, 1e-3) << "z0 = " << z0_m << ": holds at 0.97 of the collapse moment";
+		const AxialOutcome outside = loadWithAxialForce(YieldSurface::BendingAxial, n, 1.03 * m, 1.0, 0.1, iSec);
+		EXPECT_GT(outside.rootRotation_rad, 0.1) << "z0 = " << z0_m << ": collapses at 1.03";
+		EXPECT_LT(outside.innerRotation_rad, 0.01 * outside.rootRotation_rad + 1e-4) << "with the hinge at the root alone";
+		const double rate = outside.rootShortening_m / outside.rootRotation_rad;
+		EXPECT_NEAR(rate, z0_m, 0.1 * z0_m) << "the hinge shortens as normal flow makes it";
+		const Energies& e = outside.energies;
+		EXPECT_NEAR(e.load_work_j, e.mechanical_j() + e.plastic_j, 0.03 * e.load_work_j) << "the books balance";
+		const AxialOutcome box = loadWithAxialForce(YieldSurface::PerDof, n, 1.03 * m, 1.0, 0.1, iSec);
+		EXPECT_LT(box.rootRotation_rad, 1e-3) << "control: the box holds it";
+		std::printf("[ info     ] I section, z0 = %.3f m: N = %.4f Np, M = %.4f Mp; root %.5f rad at 0.97, %.4f rad at 1.03; shortening "
+					"%.4f m/rad (normal flow %.4f); load work %.1f J, mechanical %.1f J, plastic %.1f J; rectangle's curve %.4f Mp\n",
+					z0_m, n, m, inside.rootRotation_rad, outside.rootRotation_rad, rate, z0_m, e.load_work_j, e.mechanical_j(), e.plastic_j,
+					1.0 - n * n);
+	}
 }
 
 // Bending with torsion. A tube (100 x 8 mm) carries a torque T = 0.6 Tp about its tip segment (a follower torque) and
@@ -390,7 +428,7 @@ TEST(CombinedLoad, ASurfaceTheSectionCannotGiveIsRefusedByName)
 	spec.joint.method = JointMethod::PlasticHinge;
 	spec.joint.yield_surface = YieldSurface::Biaxial;
 	EXPECT_FALSE(Beam(rig.world, spec, &rig.support).errors().empty());
-	// bending with axial force: a rectangle's curve only
+	// bending with axial force: a rectangle's or an I section's curve
 	spec.joint.method = JointMethod::ElasticPlastic2;
 	spec.joint.section = tube(0.1, 0.008);
 	spec.joint.yield_surface = YieldSurface::BendingAxial;

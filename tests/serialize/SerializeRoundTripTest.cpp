@@ -23,6 +23,10 @@ extern bool gDisableDeactivation;
 namespace
 {
 const btScalar kStep = btScalar(1.) / btScalar(240.);
+// an IPE 300's moment-axial shape (h 300, b 150, t_w 7.1, t_f 10.7 mm): the web's share of the area, the flanges' share
+// of the plastic modulus
+const btScalar kIpe300Web = btScalar(0.0071 * 0.2786 / (2 * 0.15 * 0.0107 + 0.0071 * 0.2786));
+const btScalar kIpe300Flange = btScalar(0.15 * 0.0107 * 0.2893 / (0.15 * 0.0107 * 0.2893 + 0.0071 * 0.2786 * 0.2786 / 4));
 
 struct World
 {
@@ -170,6 +174,7 @@ void buildScene(World& w)
 		ek->setMaxForce(i, btScalar(i == 4 || i == 5 ? 8 : 1e6));
 	}
 	ek->setYieldSurface(bt6DofElasticPlastic2Constraint::YIELD_CIRCLE, 4, 5);
+	ek->setYieldSurfaceISection(kIpe300Web, kIpe300Flange);  // kept, not used by the circle (patch 0027)
 }
 
 // Everything the continuation depends on or books, as raw numbers: every body's pose, velocities, mass and
@@ -391,6 +396,8 @@ TEST_F(SerializeRoundTrip, PlasticHingeAndCapSurviveSaveAndLoad)
 	EXPECT_EQ(bt6DofElasticPlastic2Constraint::YIELD_CIRCLE, ek->getYieldSurface());
 	EXPECT_EQ(4, ek->getYieldSurfaceDof(0));
 	EXPECT_EQ(5, ek->getYieldSurfaceDof(1));
+	EXPECT_EQ(kIpe300Web, ek->getWebAxialFraction()) << "the I section's shape comes back (patch 0027)";
+	EXPECT_EQ(kIpe300Flange, ek->getFlangeMomentFraction());
 	EXPECT_GT(dynamic_cast<bt6DofElasticPlastic2Constraint*>(original.world.getConstraint(9))->getAbsorbedEnergy(), btScalar(0)) << "K must be mid-yield";
 }
 
@@ -564,6 +571,36 @@ TEST(SerializeFormat, AYieldSurfaceOutOfItsRangeIsNotRestored)
 			<< what;
 		EXPECT_EQ(c.restored ? 5 : -1, loaded.getYieldSurfaceDof(0)) << what;
 		EXPECT_EQ(c.restored ? 4 : -1, loaded.getYieldSurfaceDof(1)) << what;
+	}
+}
+
+// The I section's shape comes back only as setYieldSurfaceISection would take it (patch 0027): a file written before the
+// shape was serialized reads it as (0, 0), and a damaged one may hold any pair; both load with the rectangle's (1, 0).
+TEST(SerializeFormat, AnISectionShapeOutOfItsRangeIsNotRestored)
+{
+	World w;
+	btRigidBody* body = w.addBox(btVector3(1, 1, 1), 1, btVector3(0, 0, 0));
+	bt6DofElasticPlastic2Constraint saved(*body, btTransform::getIdentity());
+	saved.setMaxForce(4, 8);
+	saved.setMaxForce(0, 80);
+	saved.setYieldSurfaceISection(kIpe300Web, kIpe300Flange);
+	saved.setYieldSurface(bt6DofElasticPlastic2Constraint::YIELD_I_SECTION_AXIAL, 4, 0);
+	std::vector<char> buffer = serializeAlone(saved, bt6DofElasticPlastic2ConstraintDataName);
+	bt6DofElasticPlastic2ConstraintData& data = *reinterpret_cast<bt6DofElasticPlastic2ConstraintData*>(buffer.data());
+	const double cases[][2] = {{kIpe300Web, kIpe300Flange}, {0, 0}, {1, 0.5}, {0.5, 0}, {0.2, 0.2}, {-1, 0.5}, {std::nan(""), 0.5}};
+	for (const auto& c : cases)
+	{
+		data.m_surfaceShape[0] = c[0];
+		data.m_surfaceShape[1] = c[1];
+		bt6DofElasticPlastic2Constraint loaded(*body, btTransform::getIdentity());
+		deSerializeAlone(loaded, data);
+		const bool restored = c[0] == double(kIpe300Web);
+		const std::string what = std::to_string(c[0]) + ", " + std::to_string(c[1]);
+		EXPECT_EQ(bt6DofElasticPlastic2Constraint::YIELD_I_SECTION_AXIAL, loaded.getYieldSurface()) << what;
+		EXPECT_EQ(restored ? kIpe300Web : btScalar(1), loaded.getWebAxialFraction()) << what;
+		EXPECT_EQ(restored ? kIpe300Flange : btScalar(0), loaded.getFlangeMomentFraction()) << what;
+		// on the rectangle's curve, M = 0.64 Mp with N = 0.6 Np is on the surface; on the IPE 300's it is outside
+		EXPECT_NEAR(restored ? 1.1086 : 1.0, double(loaded.getYieldSurfaceGauge(btScalar(0.64), btScalar(0.6))), 0.001) << what;
 	}
 }
 
