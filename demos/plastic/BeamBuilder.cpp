@@ -79,7 +79,7 @@ Beam::Beam(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* su
 			JointSpec joint = spec.joint;
 			joint.pivot_m = spec.start_m + axis * btScalar(i * m_segmentLength_m);
 			joint.basis = basis;
-			joint.segment_length_m = m_segmentLength_m;
+			joint.segment_length_m = (i == 0 && spec.support_joint_half_length) ? m_segmentLength_m / 2 : m_segmentLength_m;
 			m_joints.push_back(makeJoint(joint, *previous, *body));  // validate(spec) checked its fields
 			m_specs.push_back(joint);
 			m_world.addConstraint(m_joints.back().constraint.get(), true);

@@ -22,6 +22,11 @@ struct BeamSpec
 	// DISABLE_DEACTIVATION, for a scene whose loads change on resting bodies (a load ramp: a force on a sleeping
 	// body does nothing and does not wake it)
 	bool may_sleep = true;
+	// the joint at the support stands for the half segment between the support and the first segment's centre: its
+	// elastic stiffness is E I / (L / 2) and its hinge length L / 2 (a member whose joints each stand for the length
+	// around them; its elastic tip deflection converges as the segments get shorter: +3.1 % at 4, +0.8 % at 8). false:
+	// a whole segment, as the scenes have been built (+41 % at 4 segments, +9.6 % at 16)
+	bool support_joint_half_length = false;
 	// every joint of the member (and its support): method, section, material (or capacities and stiffnesses given
 	// directly), limits, solver settings, yield surface; the beam sets each one's pivot, basis and segment length. The
 	// segments' boxes and masses come from its section and material, which a beam always needs.

@@ -1,5 +1,7 @@
 #include "JointFactory.h"
 
+#include "HingeLaw.h"
+
 #include <cmath>
 #include <sstream>
 #include <utility>
@@ -175,6 +177,15 @@ std::vector<std::string> validate(const JointSpec& spec)
 	{
 		errors.push_back("method: not one of brittle, spring, spring2, hinge-motor, plastic-hinge, elastic-plastic, elastic-plastic2");
 	}
+	if (spec.stress_strain && spec.method != JointMethod::ElasticPlastic2)
+	{
+		errors.push_back("stress_strain: only an elastic-plastic2 joint hardens (not " + std::string(jointMethodName(spec.method)) + ")");
+	}
+	else if (spec.stress_strain && spec.section.error.empty() && errors.empty())
+	{
+		const HingeLaw law = hingeLaw(spec.section, *spec.stress_strain, spec.segment_length_m);
+		if (!law.error.empty()) errors.push_back("stress_strain: " + law.error);
+	}
 	for (const std::string& e : validate(spec.solver)) errors.push_back(e);
 	return errors;
 }
@@ -249,6 +260,17 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 			auto c = std::make_unique<bt6DofElasticPlastic2Constraint>(a, b, frameIn(a, spec), frameIn(b, spec));
 			configureElasticPlastic(*c, spec, [](bt6DofElasticPlastic2Constraint& j, int i, double k) { j.setStiffness(i, btScalar(k), false); });
 			setYieldSurface(*c, spec);
+			if (spec.stress_strain)
+			{
+				const HingeLaw law = hingeLaw(spec.section, *spec.stress_strain, spec.segment_length_m);
+				btScalar stiffness[16], maxMoment[16];
+				for (size_t j = 0; j < law.layers.size(); j++)
+				{
+					stiffness[j] = btScalar(law.layers[j].stiffness_nm_rad);
+					maxMoment[j] = std::isfinite(law.layers[j].max_moment_nm) ? btScalar(law.layers[j].max_moment_nm) : SIMD_INFINITY;
+				}
+				c->setHardeningLayers(3, int(law.layers.size()), stiffness, maxMoment);
+			}
 			configureJoint(*c, spec.solver, false);  // springs
 			const btPlasticConstraintState* state = &c->getPlasticState();
 			return Joint{std::move(c), state, spec.method};

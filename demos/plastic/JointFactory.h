@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "Section.h"
+#include "StressStrain.h"
 #include "SolverSettings.h"
 #include "btBulletDynamicsCommon.h"
 
@@ -58,6 +59,11 @@ struct JointSpec
 	double breaking_force_n = 0;           // brittle: the force (N) at which it breaks (impulse threshold = force x step)
 	JointSolverSettings solver;            // what the joint asks of the solver (default: warm started rows)
 	YieldSurface yield_surface = YieldSurface::PerDof;  // elastic-plastic2 only
+	// elastic-plastic2 only: the main bending (about y) hardens as the section does under this curve (HingeLaw.h: the
+	// section's moment-curvature as parallel layers, the hinge length segment_length_m); its elastic stiffness and
+	// first yield come from the curve, the other DOFs keep the material's. Without it the joint is elastic-perfectly
+	// plastic at fy W_pl. A DOF that is rigid-plastic in a step (too stiff for it) yields at the layers' sum.
+	std::optional<StressStrainCurve> stress_strain;
 };
 
 // A joint and, for the plastic methods, its plastic bookkeeping (the same interface for all three classes, kept
