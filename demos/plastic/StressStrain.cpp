@@ -1,6 +1,7 @@
 #include "StressStrain.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 namespace plastic
@@ -75,5 +76,52 @@ StressStrainCurve bilinear(double youngs_modulus_pa, double yield_stress_pa, dou
 	if (ultimate_strain > yieldStrain)
 		c.pairs.push_back({ultimate_strain, yield_stress_pa + hardening_ratio * youngs_modulus_pa * (ultimate_strain - yieldStrain)});
 	return c;
+}
+namespace
+{
+// the whole of text (spaces around it allowed) as a finite number
+bool wholeNumber(const std::string& text, double& value)
+{
+	const char* begin = text.c_str();
+	char* end = nullptr;
+	value = std::strtod(begin, &end);
+	if (end == begin) return false;
+	while (*end == ' ' || *end == '\t' || *end == '\r') end++;
+	return *end == '\0' && std::isfinite(value);
+}
+}  // namespace
+
+StressStrainCurve parseStressStrainCsv(const std::string& text, std::vector<std::string>& errors)
+{
+	StressStrainCurve curve;
+	std::istringstream in(text);
+	std::string line;
+	const size_t errorsBefore = errors.size();
+	bool first = true;
+	for (int number = 1; std::getline(in, line); number++)
+	{
+		const size_t start = line.find_first_not_of(" \t\r");
+		if (start == std::string::npos || line[start] == '#') continue;
+		const size_t comma = line.find(',');
+		double strain = 0, stress = 0;
+		const bool numbers = comma != std::string::npos && wholeNumber(line.substr(0, comma), strain) && wholeNumber(line.substr(comma + 1), stress);
+		if (!numbers && first && comma != std::string::npos)
+		{
+			first = false;  // a header of names
+			continue;
+		}
+		first = false;
+		if (!numbers)
+		{
+			std::ostringstream e;
+			e << "stress-strain CSV line " << number << ": '" << line << "' is not two numbers 'strain,stress_pa'";
+			errors.push_back(e.str());
+			continue;
+		}
+		curve.pairs.push_back({strain, stress});
+	}
+	for (const std::string& e : validate(curve)) errors.push_back(e);
+	if (errors.size() > errorsBefore) curve.pairs.clear();
+	return curve;
 }
 }  // namespace plastic

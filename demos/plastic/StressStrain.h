@@ -44,4 +44,9 @@ inline StressStrainCurve elasticPerfectlyPlastic(const Material& m, double ultim
 }
 // E up to fy, then hardening_ratio x E to ultimate_strain (hardening_ratio in [0, 1))
 StressStrainCurve bilinear(double youngs_modulus_pa, double yield_stress_pa, double hardening_ratio, double ultimate_strain = 0.2);
+
+// A curve from CSV text (a file's contents): one pair a line, "strain,stress_pa" (SI: strain in m/m, stress in Pa), a
+// header line of names first if any, '#' comments and blank lines skipped. A line that is not two numbers is an error
+// naming its line; the curve is then checked by validate (errors name the pair). No pairs kept when there are errors.
+StressStrainCurve parseStressStrainCsv(const std::string& text, std::vector<std::string>& errors);
 }  // namespace plastic

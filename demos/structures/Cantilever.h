@@ -6,11 +6,13 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "scene/SteppedScene.h"
 #include "scene/StructureRig.h"
+#include "plastic/StressStrain.h"
 
 namespace structures
 {
@@ -38,6 +40,19 @@ struct CantileverParameters
 	double mechanism_rotation_rad = 0.05;
 	double hold_s = 2.0;       // a held load that has not turned the mechanism that far by then is raised again
 	double duration_s = 30.0;  // at most; a constant dead load stops when the beam has stopped
+	// elastic-plastic2 only: the joints harden as the section does under this curve (JointSpec::stress_strain; its
+	// first pair sets E and fy, and Mp = fy W_pl); none: elastic-perfectly plastic at --fy
+	std::optional<plastic::StressStrainCurve> stress_strain;
+	// > 0: a pushover under displacement control instead of a load: an actuator (a stiff spring and damper on the tip's
+	// end, along y, with integral action) drives the tip down to tip_drift x L at drift_rate_per_s and holds it
+	// settle_s; the load ratio is its force P L / Mp over the last 0.002 of drift (0.1 s at most) before it reaches the
+	// drift (a loading branch: a rigid-plastic hinge held still carries any moment up to its cap), reported with the
+	// drift the tip had then
+	double tip_drift = 0;
+	double drift_rate_per_s = 0.02;
+	double settle_s = 1.0;
+	// the support's joint stands for half a segment (BeamSpec::support_joint_half_length)
+	bool support_joint_half_length = false;
 };
 
 struct CantileverAnswer
@@ -64,6 +79,8 @@ struct CantileverResult
 	double booked_plastic_work_j = 0;     // what the joints booked (0 for the hinge-motor stand-in)
 	double energy_balance_error_pct = 0;  // (load work - kinetic - geometric plastic work) / load work
 	int holds = 0;                        // ramp: how many times the load was held (more than one: softening or vibration was not a collapse)
+	double measured_tip_drift = 0;        // pushover: the tip's downward displacement / L, over the same window
+	double drift_load_ratio = 0;          // pushover: the actuator's force P L / Mp over the last 0.002 of drift
 	int solver_fallbacks = 0;             // internal steps in which btMLCPSolver fell back to sequential impulse
 	long steps = 0;
 	double simulated_s = 0;

@@ -25,6 +25,17 @@ std::vector<std::string> validateCantileverParameters(const CantileverParameters
 	scene::requireRange(e, "mechanism-rotation", p.mechanism_rotation_rad, 1e-4, 3, "rad");
 	scene::requireRange(e, "hold", p.hold_s, 1e-3, 100, "s");
 	scene::requireRange(e, "duration", p.duration_s, 1e-3, 1000, "s");
+	scene::requireRange(e, "tip-drift", p.tip_drift, 0, 1, "(of the length; 0 = a load, not a pushover)");
+	scene::requireRange(e, "drift-rate", p.drift_rate_per_s, 1e-4, 10, "1/s (of the length)");
+	scene::requireRange(e, "settle", p.settle_s, 0.2, 100, "s");
+	if (p.tip_drift > 0 && p.ramp_rate_per_s > 0) e.push_back("tip-drift and ramp-rate: a pushover drives the tip, it does not ramp a load (one or the other)");
+	if (p.tip_drift > 0 && p.follower_load) e.push_back("tip-drift and follower: the actuator drives the tip along y (one or the other)");
+	if (p.stress_strain)
+	{
+		if (p.solver.method != plastic::JointMethod::ElasticPlastic2)
+			e.push_back(std::string("stress-strain: only elastic-plastic2 joints harden, not ") + plastic::jointMethodName(p.solver.method));
+		for (const std::string& c : plastic::validate(*p.stress_strain)) e.push_back("stress-strain: " + c);
+	}
 	if (e.empty() && p.duration_s / p.solver.world.internal_step_s > 1e8) e.push_back("duration / dt: more than 1e8 steps");
 	return e;
 }
@@ -33,7 +44,8 @@ CantileverAnswer cantileverAnswer(const CantileverParameters& p)
 {
 	CantileverAnswer a;
 	plastic::Material m;
-	m.yield_stress_pa = p.yield_stress_pa;
+	// Mp = fy W_pl, fy the curve's first yield when the joints follow a curve
+	m.yield_stress_pa = p.stress_strain && !p.stress_strain->pairs.empty() ? plastic::yieldStress_pa(*p.stress_strain) : p.yield_stress_pa;
 	a.plastic_moment_nm = plastic::capacities(plastic::rectangle(p.section_width_m, p.section_depth_m), m).plastic_moment_y_nm;
 	a.collapse_load_n = a.plastic_moment_nm / p.length_m;
 	a.collapse_ratio = 1.0;

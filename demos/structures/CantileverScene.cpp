@@ -19,7 +19,7 @@ namespace structures
 struct CantileverScene::State
 {
 	explicit State(const CantileverParameters& params)
-		: p(params), start(std::chrono::steady_clock::now()), answer(cantileverAnswer(p)), rig(p.solver), beam(rig.world(), scene::requireValid(beamSpec(p)), &rig.ground()), load(*beam.segments().back(), btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, btScalar(-answer.collapse_load_n), 0), p.follower_load), test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * answer.collapse_ratio, p.collapse_rate_rad_s, p.rate_window_s, p.mechanism_rotation_rad, p.hold_s}), ledger(btVector3(0, 0, 0))
+		: p(params), start(std::chrono::steady_clock::now()), answer(cantileverAnswer(p)), rig(p.solver), beam(rig.world(), scene::requireValid(beamSpec(p)), &rig.ground()), load(*beam.segments().back(), btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, btScalar(-answer.collapse_load_n), 0), p.follower_load), actuator(*beam.segments().back(), btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, -1, 0)), test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * answer.collapse_ratio, p.collapse_rate_rad_s, p.rate_window_s, p.mechanism_rotation_rad, p.hold_s}), ledger(btVector3(0, 0, 0))
 	{
 	}
 
@@ -37,10 +37,20 @@ struct CantileverScene::State
 		spec.joint.material.density_kg_m3 = p.density_kg_m3;
 		spec.bending_axis = btVector3(0, 0, 1);
 		spec.joint.method = p.solver.method;
+		spec.support_joint_half_length = p.support_joint_half_length;
+		if (p.stress_strain)
+		{
+			// the curve's first pair is the material's E and fy
+			spec.joint.stress_strain = *p.stress_strain;
+			spec.joint.material.yield_stress_pa = plastic::yieldStress_pa(*p.stress_strain);
+			spec.joint.material.youngs_modulus_pa = plastic::yieldStress_pa(*p.stress_strain) / plastic::yieldStrain(*p.stress_strain);
+		}
 		return spec;
 	}
 
 	double jointRotation(size_t j) const { return angles[j + 1].angle_rad() - angles[j].angle_rad(); }
+	// a pushover ends when the tip has been held at its drift for settle_s
+	double pushoverEnd_s() const { return p.tip_drift / p.drift_rate_per_s + p.settle_s; }
 
 	CantileverParameters p;
 	std::chrono::steady_clock::time_point start;
@@ -49,6 +59,14 @@ struct CantileverScene::State
 	plastic::Beam beam;
 	// the segment's local z is the member axis: the tip is half a segment out
 	plastic::PointLoad load;
+	// the pushover's actuator: its factor is its force (N) down along y
+	plastic::PointLoad actuator;
+	double actuatorStiffness_n_m = 0;
+	double actuatorDamping_n_s_m = 0;
+	double actuatorIntegral_n = 0;  // the integral action: what the spring's lag leaves, driven to zero at 5 rad/s
+	double actuatorForceSum_n = 0;
+	double actuatorDriftSum = 0;
+	int actuatorSamples = 0;
 	CollapseTest test;
 	std::vector<scene::PlanarAngle> angles;  // the ground, then each segment
 	plastic::EnergyLedger ledger;
@@ -69,7 +87,20 @@ CantileverScene::CantileverScene(const CantileverParameters& p) : m(std::make_un
 	State& s = *m;
 	for (btRigidBody* b : s.beam.segments()) b->setCollisionFlags(b->getCollisionFlags() | btCollisionObject::CF_NO_CONTACT_RESPONSE);
 	s.ramp = p.ramp_rate_per_s > 0;
-	s.load.setFactor(s.ramp ? 0.0 : p.load_ratio);
+	s.load.setFactor(s.ramp || p.tip_drift > 0 ? 0.0 : p.load_ratio);
+	s.actuator.setFactor(0.0);
+	if (p.tip_drift > 0)
+	{
+		// a stiff spring on the tip (100 times the member's elastic tip stiffness 3 E I / L^3), soft enough to be stable
+		// with the tip segment's mass at the step (k dt^2 / m <= 1/4), critically damped, with an integral action (5 rad/s)
+		// that takes away the spring's lag, so that the tip reaches its drift also when the spring is soft
+		const plastic::BeamSpec spec = State::beamSpec(p);
+		const double EI = spec.joint.material.youngs_modulus_pa * spec.joint.section.second_moment_y_m4;
+		const double tipMass_kg = 1.0 / double(s.beam.segments().back()->getInvMass());
+		const double dt = p.solver.world.internal_step_s;
+		s.actuatorStiffness_n_m = std::min(100.0 * 3.0 * EI / std::pow(p.length_m, 3), 0.25 * tipMass_kg / (dt * dt));
+		s.actuatorDamping_n_s_m = 2.0 * std::sqrt(s.actuatorStiffness_n_m * tipMass_kg);
+	}
 	s.angles.emplace_back(nullptr);
 	for (btRigidBody* b : s.beam.segments()) s.angles.emplace_back(b);
 	for (btRigidBody* b : s.beam.segments()) s.ledger.addBody(*b);
@@ -84,16 +115,44 @@ CantileverScene::CantileverScene(const CantileverParameters& p) : m(std::make_un
 			state->load.setFactor(state->test.factor());
 		}
 		state->load.apply();
+		if (state->p.tip_drift > 0)
+		{
+			// the actuator's target goes down at the drift rate to the drift, then stays
+			const double target_m = -state->p.length_m * std::min(state->p.tip_drift, state->p.drift_rate_per_s * state->rig.time_s());
+			const btRigidBody& tip = *state->beam.segments().back();
+			const btVector3 point = state->actuator.point_m();
+			const double velocity = double(tip.getVelocityInLocalPoint(point - tip.getCenterOfMassPosition()).y());
+			const double error_m = double(point.y()) - target_m;
+			state->actuatorIntegral_n += 5.0 * step_s * state->actuatorStiffness_n_m * error_m;
+			const double force_n = state->actuatorStiffness_n_m * error_m + state->actuatorDamping_n_s_m * velocity + state->actuatorIntegral_n;
+			state->actuator.setFactor(force_n);
+			// measured on the way there, over the last 0.002 of drift (at most 0.1 s) before the target reaches it: a
+			// rigid-plastic hinge held still carries any moment up to its cap, so only a loading branch has a load ratio
+			const double reach_s = state->p.tip_drift / state->p.drift_rate_per_s;
+			const double window_s = std::min(0.1, 0.002 / state->p.drift_rate_per_s);
+			if (state->rig.time_s() >= reach_s - window_s && state->rig.time_s() < reach_s)
+			{
+				state->actuatorForceSum_n += force_n;
+				state->actuatorDriftSum += -double(point.y()) / state->p.length_m;
+				state->actuatorSamples++;
+			}
+		}
+		state->actuator.apply();
 		state->beam.updateForStep(step_s); });
 	s.rig.afterEachStep([state]
 						{
 		state->load.afterStep();
+		state->actuator.afterStep();
 		for (scene::PlanarAngle& a : state->angles) a.update(); });
 }
 
 CantileverScene::~CantileverScene() = default;
 
-bool CantileverScene::done() const { return m->finished || m->rig.time_s() >= m->p.duration_s - 1e-12; }
+bool CantileverScene::done() const
+{
+	const double end_s = m->p.tip_drift > 0 ? std::min(m->p.duration_s, m->pushoverEnd_s()) : m->p.duration_s;
+	return m->finished || m->rig.time_s() >= end_s - 1e-12;
+}
 double CantileverScene::time_s() const { return m->rig.time_s(); }
 btDiscreteDynamicsWorld& CantileverScene::world() { return m->rig.world(); }
 
@@ -126,7 +185,7 @@ void CantileverScene::step()
 			s.finished = true;
 		}
 	}
-	else if (!s.p.follower_load && s.p.load_ratio > 1)
+	else if (!s.p.follower_load && s.p.load_ratio > 1 && s.p.tip_drift <= 0)
 	{
 		const double kinetic = s.ledger.measure().kinetic_j;
 		s.maxKinetic = std::max(s.maxKinetic, kinetic);
@@ -154,7 +213,9 @@ CantileverResult CantileverScene::result() const
 	r.holds = s.test.holds();
 	r.root_rotation_rad = -s.jointRotation(0);
 	for (size_t j = 0; j < s.atThird.size(); j++) r.creep_rad = std::max(r.creep_rad, std::fabs(s.jointRotation(j) - s.atThird[j]));
-	r.load_work_j = s.load.work_j();
+	r.load_work_j = s.load.work_j() + s.actuator.work_j();
+	r.measured_tip_drift = s.actuatorSamples ? s.actuatorDriftSum / s.actuatorSamples : 0.0;
+	r.drift_load_ratio = s.actuatorSamples ? s.actuatorForceSum_n / s.actuatorSamples * s.p.length_m / s.answer.plastic_moment_nm : 0.0;
 	r.kinetic_j = s.ledger.measure().kinetic_j;
 	for (size_t j = 0; j < s.beam.joints().size(); j++) r.geometric_plastic_work_j += mp * std::fabs(s.jointRotation(j));
 	r.booked_plastic_work_j = s.beam.plasticWork_j();

@@ -1,5 +1,8 @@
 #include "StructuresCommandLine.h"
 
+#include <fstream>
+#include <sstream>
+
 #include "scene/FlagTable.h"
 
 namespace structures
@@ -79,6 +82,13 @@ const Flags<CantileverParameters>& cantileverFlags()
 		f["segments"] = wholeFlag(&P::segments, "N  default 4");
 		f["load-ratio"] = numberFlag(&P::load_ratio, "P_L_OVER_MP  constant tip load, default 1.5");
 		f["follower"] = switchFlag(&P::follower_load, "the load turns with the tip (default: dead load along -y)");
+		f["tip-drift"] = numberFlag(&P::tip_drift, "FRACTION  > 0: a pushover, the tip driven down to this times the length (load_ratio in --json: P L / Mp there); default 0");
+		f["drift-rate"] = numberFlag(&P::drift_rate_per_s, "1/S  the pushover's drift per second, default 0.02");
+		f["settle"] = numberFlag(&P::settle_s, "SECONDS  the pushover holds its drift this long, default 1");
+		f["half-length-support"] = switchFlag(&P::support_joint_half_length, "the support's joint stands for half a segment (elastic stiffness 2 E I / L)");
+		// --stress-strain=FILE is read by parseStructuresCommandLine
+		f["stress-strain"] = {[](P&, const std::string&) { return true; },
+							  "FILE  CSV of (strain, stress in Pa) pairs: elastic-plastic2 joints harden as the section does (its first pair sets E and fy)"};
 		return f;
 	}();
 	return flags;
@@ -157,6 +167,21 @@ StructuresCommandLine parseStructuresCommandLine(const std::vector<std::string>&
 	for (const scene::FlagArgument& flag : flags)
 	{
 		if (cl.scene == "cantilever") scene::applyFlag(cantileverFlags(), cl.cantilever, flag, cl.errors, context);
+		if (cl.scene == "cantilever" && flag.name == "stress-strain" && flag.hasValue)
+		{
+			std::ifstream file(flag.value);
+			std::ostringstream text;
+			text << file.rdbuf();
+			if (!file)
+			{
+				cl.errors.push_back("--stress-strain: cannot read '" + flag.value + "'");
+				continue;
+			}
+			std::vector<std::string> curveErrors;
+			const plastic::StressStrainCurve curve = plastic::parseStressStrainCsv(text.str(), curveErrors);
+			for (const std::string& e : curveErrors) cl.errors.push_back("--stress-strain " + flag.value + ": " + e);
+			if (curveErrors.empty()) cl.cantilever.stress_strain = curve;
+		}
 		if (cl.scene == "portal") scene::applyFlag(portalFlags(), cl.portal, flag, cl.errors, context);
 		if (cl.scene == "drop-weight") scene::applyFlag(dropWeightFlags(), cl.dropWeight, flag, cl.errors, context);
 	}

@@ -26,6 +26,27 @@ double bilinearRectangleMoment(double b, double h, double alpha, double kappa)
 }
 }  // namespace
 
+// CSV text: a header and comments are skipped, a line that is not two numbers is named, then the pairs are checked
+TEST(StressStrain, ACsvCurveIsReadLineByLine)
+{
+	std::vector<std::string> errors;
+	const StressStrainCurve curve = parseStressStrainCsv("# steel\nstrain,stress_pa\n\n0.002,400e6\n0.2, 796e6\n", errors);
+	EXPECT_TRUE(errors.empty()) << (errors.empty() ? "" : errors.front());
+	ASSERT_EQ(curve.pairs.size(), 2u);
+	EXPECT_EQ(curve.pairs[1].stress_pa, 796e6);
+	errors.clear();
+	EXPECT_TRUE(parseStressStrainCsv("strain,stress\n0.002,400e6\n0.004;410e6\n", errors).pairs.empty());
+	ASSERT_EQ(errors.size(), 1u);
+	EXPECT_NE(errors[0].find("line 3: '0.004;410e6' is not two numbers"), std::string::npos) << errors[0];
+	errors.clear();
+	parseStressStrainCsv("0.002,400e6\n0.001,500e6\n", errors);
+	ASSERT_FALSE(errors.empty());
+	EXPECT_NE(errors[0].find("pair 2"), std::string::npos) << errors[0];
+	errors.clear();
+	parseStressStrainCsv("", errors);
+	EXPECT_FALSE(errors.empty()) << "no pairs";
+}
+
 TEST(StressStrain, CurvesAreCheckedPairByPair)
 {
 	EXPECT_TRUE(validate(bilinear(kE, kFy, 0.02)).empty());
