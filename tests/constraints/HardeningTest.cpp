@@ -29,6 +29,8 @@ struct Twist
 	double workJ = 0;
 	double torqueNm = 0;
 
+	// layers: 2 (kinematic: a yielding layer beside an elastic one), 1 (one EPP spring, the control), 3 (isotropic: one
+	// layer of the whole stiffness whose cap grows by 110 N m/rad of its flow, a post-yield slope of 100 N m/rad)
 	explicit Twist(int layers)
 	{
 		body = w.addBox(btVector3(0.1, 0.1, 0.1), 100.0, btVector3(0, 0, 0));
@@ -43,6 +45,13 @@ struct Twist
 		if (layers == 2)
 		{
 			joint->setHardeningLayers(5, 2, k, c);
+		}
+		else if (layers == 3)
+		{
+			const btScalar whole[1] = {btScalar(kLayerStiffness + kElasticStiffness)};
+			const btScalar cap[1] = {btScalar(kYieldMoment)};
+			const btScalar growth[1] = {btScalar(110)};
+			joint->setHardeningLayers(5, 1, whole, cap, growth);
 		}
 		else
 		{
@@ -117,6 +126,32 @@ TEST(Hardening, LayersFollowTheBilinearKinematicLaw)
 				"work %.4f J, elastic %.4f J, kinetic %.2e J; plastic rotation %.4f rad\n",
 				elastic, 8.0 / K, up, upExpected, unloaded, setExpected, down, -upExpected, isotropic, booked, dissipated, t.workJ, elasticEnd, kinetic,
 				double(t.joint->getCurrentPlasticRotation()));
+}
+
+// Isotropic hardening: the same elastic stiffness, first yield and post-yield slope (1100 N m/rad to 11 N m, then 100)
+// with the cap growing instead of a back force. Loaded to 20 N m it is at 0.1 rad and unloads to 0.0818 rad as the
+// kinematic one does; reversed to -20 N m it does not yield again (its cap has grown to 20 N m): 0.0636 rad, where the
+// kinematic layers reached -0.1. It books the work of its growing cap over its flow, 11 x 0.0818 + 110 x 0.0818^2 / 2
+// = 1.268 J.
+TEST(Hardening, AnIsotropicLayerYieldsAgainOnlyAtItsGrownCap)
+{
+	Twist t(3);
+	const double K = kLayerStiffness + kElasticStiffness;
+	const double up = t.rampTo(20.0);
+	const double upExpected = kYieldMoment / K + (20.0 - kYieldMoment) / kElasticStiffness;
+	EXPECT_NEAR(up, upExpected, 0.02 * upExpected);
+	const double unloaded = t.rampTo(0.0);
+	const double setExpected = upExpected - 20.0 / K;
+	EXPECT_NEAR(unloaded, setExpected, 0.02 * setExpected);
+	const double down = t.rampTo(-20.0);
+	EXPECT_NEAR(down, setExpected - 20.0 / K, 0.03 * setExpected) << "no reverse yield before -20 N m";
+	const double flow = (20.0 - kYieldMoment) / 110.0;
+	const double dissipated = kYieldMoment * flow + 0.5 * 110.0 * flow * flow;
+	const double booked = double(t.joint->getAbsorbedEnergy());
+	EXPECT_NEAR(booked, dissipated, 0.03 * dissipated);
+	EXPECT_NEAR(t.workJ, booked + double(t.joint->getElasticEnergy()) + t.w.kineticEnergy(t.body), 0.03 * t.workJ);
+	std::printf("[ info     ] isotropic: %.5f (%.5f), set %.5f (%.5f), %.5f (%.5f); booked %.4f J (%.4f), work %.4f J\n", up, upExpected, unloaded,
+				setExpected, down, setExpected - 20.0 / K, booked, dissipated, t.workJ);
 }
 
 // Control: one elastic-perfectly plastic spring of the same elastic stiffness and yield moment does not harden: at
