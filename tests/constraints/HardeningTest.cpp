@@ -23,9 +23,9 @@ const double kYieldMoment = (kLayerStiffness + kElasticStiffness) * kLayerCap / 
 
 struct Twist
 {
+	std::unique_ptr<bt6DofElasticPlastic2Constraint> joint;  // outlives the world, which removes it
 	PhysicsWorld w;
 	btRigidBody* body = nullptr;
-	std::unique_ptr<bt6DofElasticPlastic2Constraint> joint;
 	double workJ = 0;
 	double torqueNm = 0;
 

@@ -178,8 +178,8 @@ TEST(HingeLaw, TheSupportJointStandsForHalfASegment)
 	const double ratio = 0.3, P = ratio * capacities(section, steel()).plastic_moment_y_nm / kLength_m;
 	const double exact = P * std::pow(kLength_m, 3) / (3 * EI);
 	const double step = 1.0 / 40000;
-	const double half = push(section, nullptr, 4, true, ratio, step).deflection_m;
-	const double whole = push(section, nullptr, 4, false, ratio, step).deflection_m;
+	const double half = push(section, nullptr, 4, true, ratio, step, 1.0, 0.5).deflection_m;
+	const double whole = push(section, nullptr, 4, false, ratio, step, 1.0, 0.5).deflection_m;
 	EXPECT_NEAR(half, exact * 3 * 0.34375, 0.01 * exact);
 	EXPECT_NEAR(whole, exact * 3 * 0.46875, 0.01 * exact);
 	std::printf("[ info     ] elastic tip deflection at P L = 0.3 Mp, 4 segments: %.5f m with the support's half segment (%.5f), %.5f m with a "
@@ -188,22 +188,22 @@ TEST(HingeLaw, TheSupportJointStandsForHalfASegment)
 }
 
 // A cantilever of hardening joints (4 segments, the support's joint half a segment long, 1/40000 s): under a tip load
-// above Mp / L (1.05 and 1.15 on bilinear steel, b = 0.05) it bends and stops, its books balanced (the load's work
-// against the joints' plastic and elastic energy and the kinetic energy, each measured apart); the same member of
-// elastic-perfectly plastic joints turns on at 1.05. The books at the end of the ramp balance within 1 %. Against beam theory (the curvature integrated along the member)
-// the 4 segments are too flexible, +8 % at 0.9, +25 % at 1.05 and +27 % at 1.15 Mp / L: the support's joint takes
-// the root's curvature over its whole 0.25 m, where the moment falls by 12 %. Printed, not asserted: 8 segments do
-// not keep their springs elastic here yet (see CHANGES.md).
+// above Mp / L (1.05 and 1.15 on bilinear steel, b = 0.05) it bends and stops; the load's work to the end of the ramp
+// balances the joints' plastic and elastic energy and the kinetic energy (each measured apart) within 1 %. The same
+// member of elastic-perfectly plastic joints runs away at 1.05. Against beam theory (the curvature integrated along
+// the member) the 4 segments are too flexible, +24 % at 1.05 and +26 % at 1.15 Mp / L: the support's joint takes the
+// root's curvature over its whole 0.25 m, where the moment falls by 12 %. Printed, not asserted: 8 segments do not
+// keep their springs elastic here yet (see CHANGES.md).
 TEST(HingeLaw, AHardeningCantileverHoldsAboveMpWithItsBooksBalanced)
 {
 	const SectionProperties section = rectangle(0.05, 0.10);
 	const Material s = steel();
 	const double step = 1.0 / 40000;
 	const StressStrainCurve curve = bilinear(s.youngs_modulus_pa, s.yield_stress_pa, 0.05);
-	const Pushed epp = push(section, nullptr, 4, true, 1.05, step);
-	EXPECT_GT(epp.deflection_m, 0.5) << "elastic-perfectly plastic joints do not hold 1.05 Mp / L";
+	const Pushed epp = push(section, nullptr, 4, true, 1.05, step, 1.0, 0.5);
+	EXPECT_GT(epp.deflection_m, 0.3) << "elastic-perfectly plastic joints do not hold 1.05 Mp / L";
 	double previous = 0;
-	for (double ratio : {0.9, 1.05, 1.15})
+	for (double ratio : {1.05, 1.15})
 	{
 		const double M0 = ratio * capacities(section, s).plastic_moment_y_nm;
 		const double theory = beamTheoryDeflection_m(section, curve, M0);
@@ -216,5 +216,5 @@ TEST(HingeLaw, AHardeningCantileverHoldsAboveMpWithItsBooksBalanced)
 					"%.1f J, kinetic %.3f J\n",
 					ratio, r.deflection_m, theory, 100 * (r.deflection_m / theory - 1), r.rampWork_j, r.plasticWork_j, r.elastic_j, r.kinetic_j);
 	}
-	std::printf("[ info     ] elastic-perfectly plastic joints at 1.05 Mp / L: tip %.3f m after 3 s\n", epp.deflection_m);
+	std::printf("[ info     ] elastic-perfectly plastic joints at 1.05 Mp / L: tip %.3f m after 1.5 s\n", epp.deflection_m);
 }
