@@ -23,3 +23,4 @@ python3 ci/charpy_report.py --csv=report/charpy-sweep.csv --out-dir=report --com
 # The standard striker with friction beside the rigid-plastic model: report/charpy-friction.csv, report/FRICTION.md
 python3 ci/charpy_friction_sweep.py --runner=build/bin/charpy --out-dir=report
 python3 ci/structures_report.py --runner=build/bin/structures --out=report/STRUCTURES.md --command="bash ci/report.sh"
+python3 ci/hardening_report.py --runner=build/bin/structures --out=report/HARDENING.md --command="bash ci/report.sh"

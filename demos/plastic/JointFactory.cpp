@@ -270,6 +270,9 @@ Joint makeJoint(const JointSpec& spec, btRigidBody& a, btRigidBody& b)
 					maxMoment[j] = std::isfinite(law.layers[j].max_moment_nm) ? btScalar(law.layers[j].max_moment_nm) : SIMD_INFINITY;
 				}
 				c->setHardeningLayers(3, int(law.layers.size()), stiffness, maxMoment);
+				// a step in which the DOF is rigid-plastic (too stiff for it) yields at the section's plastic moment, as
+				// a joint without a curve does, not at the layers' sum (the moment at 100 times first-yield curvature)
+				c->setMaxForce(3, btScalar(yieldStress_pa(*spec.stress_strain) * spec.section.plastic_modulus_y_m3));
 			}
 			configureJoint(*c, spec.solver, false);  // springs
 			const btPlasticConstraintState* state = &c->getPlasticState();

@@ -62,7 +62,7 @@ struct JointSpec
 	// elastic-plastic2 only: the main bending (about y) hardens as the section does under this curve (HingeLaw.h: the
 	// section's moment-curvature as parallel layers, the hinge length segment_length_m); its elastic stiffness and
 	// first yield come from the curve, the other DOFs keep the material's. Without it the joint is elastic-perfectly
-	// plastic at fy W_pl. A DOF that is rigid-plastic in a step (too stiff for it) yields at the layers' sum.
+	// plastic at fy W_pl. In a step in which the DOF is rigid-plastic (too stiff for the step) it yields at fy W_pl.
 	std::optional<StressStrainCurve> stress_strain;
 };
 

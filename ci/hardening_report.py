@@ -1,0 +1,154 @@
+#!/usr/bin/env python3
+"""Joints that harden against OpenSees: the cantilever pushover (issue 23).
+
+  ci/hardening_report.py [--runner=build/bin/structures] [--out=report/HARDENING.md] [--csv=build/sweep/hardening.csv]
+                         [--jobs=2] [--command=TEXT]
+
+Runs build/bin/structures --scene=cantilever as a pushover (--tip-drift) of a 2 m, 50 x 100 mm steel member
+(E 200 GPa, fy 400 MPa) whose elastic-plastic2 joints harden as the section does under a bilinear curve
+(--stress-strain, hardening ratios 0.01 and 0.05) in 2 and 4 segments (the support's joint half a segment long), at
+steps small enough for the joints' springs to be elastic, through ci/sweep (rows kept in CSV; a run the same runner
+binary made is not run again). Then runs the OpenSees peer (ci/opensees_cantilever.py through ci/opensees_env.sh: a
+fibre-section cantilever, force-based elements, corotational) at the drift each run reached, and writes OUT
+(markdown, whole: tmp file + rename) with both load ratios P L / Mp and the difference. Without openseespy (exit 77
+of ci/opensees_env.sh) the OpenSees column says so.
+"""
+import argparse
+import json
+import os
+import platform
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from sweep import runner as sweep  # noqa: E402
+
+PROJECT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+YOUNGS_MODULUS_PA = 200e9
+YIELD_STRESS_PA = 400e6
+HARDENING = (0.01, 0.05)
+DRIFTS = (0.05, 0.10)
+# segments -> internal step (s): the joints' bending springs are elastic (25 steps per period) at these
+SEGMENTS = {2: 1e-4, 4: 2.5e-5}
+
+
+def curve_file(directory, hardening):
+    """The bilinear curve as the runner reads it: first yield, then hardening x E to a strain of 0.2."""
+    path = os.path.join(directory, "bilinear-%g.csv" % hardening)
+    yield_strain = YIELD_STRESS_PA / YOUNGS_MODULUS_PA
+    stress = YIELD_STRESS_PA + hardening * YOUNGS_MODULUS_PA * (0.2 - yield_strain)
+    with open(path + ".tmp", "w") as f:
+        f.write("strain,stress_pa\n%.17g,%.17g\n0.2,%.17g\n" % (yield_strain, YIELD_STRESS_PA, stress))
+    os.replace(path + ".tmp", path)
+    return path
+
+
+def opensees(hardening, drifts):
+    """OpenSees' load ratios at the drifts, or None (and why) when the peer cannot run."""
+    done = subprocess.run(["bash", os.path.join(PROJECT, "ci/opensees_env.sh"), "python3", os.path.join(PROJECT, "ci/opensees_cantilever.py"),
+                           "--hardening-ratio", repr(hardening), "--drifts", ",".join("%.6f" % d for d in drifts),
+                           "--youngs-modulus-pa", repr(YOUNGS_MODULUS_PA), "--yield-stress-pa", repr(YIELD_STRESS_PA)],
+                          capture_output=True, text=True)
+    if done.returncode != 0:
+        return None, (done.stderr.strip().splitlines() or ["exit %d" % done.returncode])[-1]
+    out = json.loads(done.stdout)
+    return [p["load_ratio"] for p in out["pushover"]], out.get("openseespy_version", "")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--runner", default="build/bin/structures")
+    ap.add_argument("--out", default="report/HARDENING.md")
+    ap.add_argument("--csv", default="build/sweep/hardening.csv")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--command", default="python3 ci/hardening_report.py")
+    a = ap.parse_args()
+    os.makedirs(os.path.dirname(a.csv) or ".", exist_ok=True)
+    curves = {b: curve_file(os.path.dirname(a.csv) or ".", b) for b in HARDENING}
+    jobs = {}
+    for b in HARDENING:
+        for segments, dt in SEGMENTS.items():
+            for drift in DRIFTS:
+                jobs[(b, segments, drift)] = ["--scene=cantilever", "--method=elastic-plastic2", "--stress-strain=" + curves[b],
+                                              "--half-length-support", "--segments=%d" % segments, "--tip-drift=%g" % drift,
+                                              "--drift-rate=0.1", "--settle=0.2", "--dt=%g" % dt]
+    for drift in DRIFTS:
+        jobs[("hinge", 4, drift)] = ["--scene=cantilever", "--tip-drift=%g" % drift]
+    started = time.monotonic()
+    by_name = {repr(key): key for key in jobs}
+    rows = sweep.run_all(a.runner, [{"key": repr(key), "flags": args} for key, args in jobs.items()], a.csv, a.jobs, timeout_s=600,
+                         keep_json=True)
+    results = {by_name[r["key"]]: ({"error": r["failure"]} if r.get("failure") else json.loads(r["json"])) for r in rows}
+    total = time.monotonic() - started
+    peer = {}
+    version = ""
+    for b in HARDENING:
+        keys = [k for k in results if k[0] == b and "error" not in results[k]]
+        # one monotonic pushover through the drifts the runs reached, increasing (6 digits)
+        drifts = sorted({round(results[k]["measured_tip_drift"], 6) for k in keys})
+        ratios, info = opensees(b, drifts)
+        if ratios is None:
+            for k in keys:
+                peer[k] = "not run: " + info
+        else:
+            version = info
+            at = dict(zip(drifts, ratios))
+            for k in keys:
+                peer[k] = at[round(results[k]["measured_tip_drift"], 6)]
+    lines = [
+        "# Joints that harden against OpenSees: the cantilever pushover",
+        "",
+        "Generated by `%s` (%d runs of `build/bin/structures` through ci/sweep, %.0f s with %d jobs for those not already in `%s`;"
+        " OpenSees through `bash ci/opensees_env.sh python3 ci/opensees_cantilever.py`, openseespy %s) on %s, %s, Python %s."
+        % (a.command, len(jobs), total, a.jobs, a.csv, version or "(not installed)", platform.node(), platform.processor() or platform.machine(),
+           platform.python_version()),
+        "",
+        "A 2 m cantilever of 50 x 100 mm steel (E 200 GPa, fy 400 MPa, Mp = fy b d^2 / 4 = 50 kN m) pushed at its tip (`--tip-drift`) to",
+        "5 and 10 % of its length. Bullet: elastic-plastic2 joints that harden as the section does under a bilinear curve",
+        "(`--stress-strain`, hardening ratio b; the hinge length of each joint its segment's, the support's half a segment),",
+        "at internal steps small enough for their springs to be elastic; P L / Mp on the way to the drift. OpenSees: a fibre",
+        "section (Steel01), force-based elements, corotational geometry, at the drift the Bullet run reached. The rigid-plastic",
+        "plastic hinge (no hardening, 1/240 s) for reference: 1 / cos(theta).",
+        "",
+        "| b | segments | step (s) | drift reached | Bullet P L / Mp | OpenSees P L / Mp | difference | wall (s) |",
+        "| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |",
+    ]
+    for key in sorted(k for k in jobs if k[0] != "hinge"):
+        b, segments, drift = key
+        r = results[key]
+        if "error" in r:
+            lines.append("| %g | %d | %g | %g | failed: %s | | | |" % (b, segments, SEGMENTS[segments], drift, r["error"]))
+            continue
+        p = peer.get(key)
+        if isinstance(p, float):
+            diff = "%+.1f %%" % (100 * (r["load_ratio"] / p - 1))
+            peer_text = "%.4f" % p
+        else:
+            diff, peer_text = "", p or ""
+        lines.append("| %g | %d | %g | %.4f | %.4f | %s | %s | %.1f |" % (b, segments, SEGMENTS[segments], r["measured_tip_drift"], r["load_ratio"],
+                                                                          peer_text, diff, r["wall_s"]))
+    for drift in DRIFTS:
+        r = results[("hinge", 4, drift)]
+        if "error" not in r:
+            theta = __import__("math").asin(r["measured_tip_drift"])
+            lines.append("| plastic hinge | 4 | 1/240 | %.4f | %.4f | 1/cos(theta): %.4f | %+.2f %% | %.2f |"
+                         % (r["measured_tip_drift"], r["load_ratio"], 1 / __import__("math").cos(theta),
+                            100 * (r["load_ratio"] * __import__("math").cos(theta) - 1), r["wall_s"]))
+    lines += [
+        "",
+        "What it shows: the joints converge toward the fibre model as the member's segments get shorter (2 to 4: the",
+        "differences above halve). Each joint lumps the curvature of its segment at the moment of its own section, and near the",
+        "support, where the moment falls over the first joint's length, that overstates the plastic curvature; the issue's 5 %",
+        "needs 4 segments or more, and more than 4 need joints whose springs stay elastic in a longer chain (CHANGES.md).",
+        "",
+    ]
+    tmp = a.out + ".tmp"
+    with open(tmp, "w") as f:
+        f.write("\n".join(lines))
+    os.replace(tmp, a.out)
+    print("wrote %s" % a.out)
+
+
+if __name__ == "__main__":
+    main()
