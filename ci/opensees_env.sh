@@ -10,6 +10,7 @@
 # and the check below imports openseespy that way, so neither libblas3 nor liblapack3 is needed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. ci/pinned_venv.sh
 OPENSEESPY_VERSION=3.7.1.2  # pinned; ci/opensees_cantilever.py OPENSEESPY_VERSION says the same
 venv="${OPENSEES_VENV:-build/opensees-venv}"
 python="$venv/bin/python"
@@ -26,16 +27,7 @@ check() {
 }
 have() { [ -x "$python" ] && check >/dev/null 2>&1; }
 if ! have; then
-	mkdir -p "$(dirname "$venv")"
-	if ! { [ -x "$python" ] || python3 -m venv "$venv" >&2; }; then
-		echo "ci/opensees_env.sh: cannot make a venv at $venv (python3 -m venv failed): the OpenSees peer is not installable here" >&2
-		exit 77
-	fi
-	echo "ci/opensees_env.sh: installing openseespy==$OPENSEESPY_VERSION into $venv" >&2
-	if ! "$python" -m pip install --quiet --disable-pip-version-check "openseespy==$OPENSEESPY_VERSION" >&2; then
-		echo "ci/opensees_env.sh: pip could not install openseespy==$OPENSEESPY_VERSION: the OpenSees peer is not installable here" >&2
-		exit 77
-	fi
+	pinned_venv_install ci/opensees_env.sh "$venv" "openseespy==$OPENSEESPY_VERSION" OpenSees
 	if ! check >&2; then
 		missing=""
 		for p in libblas3 liblapack3; do
@@ -45,8 +37,4 @@ if ! have; then
 		exit 77
 	fi
 fi
-if [ $# -eq 0 ]; then
-	echo "$python"
-else
-	PEER_PYTHON="$python" PATH="$venv/bin:$PATH" exec "$@"
-fi
+pinned_venv_run "$venv" "$@"

@@ -6,25 +6,13 @@
 # Exit 77 (ctest's skip code here) with a message naming the package when mujoco cannot be installed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. ci/pinned_venv.sh
 MUJOCO_VERSION=4.0.0  # pinned; ci/mujoco_charpy.py MUJOCO_VERSION says the same
 venv="${PEER_VENV:-build/peer-venv}"
 python="$venv/bin/python"
 have() { [ -x "$python" ] && "$python" -c "import mujoco, sys; sys.exit(mujoco.__version__ != '$MUJOCO_VERSION')" 2>/dev/null; }
 if ! have; then
-	mkdir -p "$(dirname "$venv")"
-	if ! { [ -x "$python" ] || python3 -m venv "$venv" >&2; }; then
-		echo "ci/peer_env.sh: cannot make a venv at $venv (python3 -m venv failed): the MuJoCo peer is not installable here" >&2
-		exit 77
-	fi
-	echo "ci/peer_env.sh: installing mujoco==$MUJOCO_VERSION into $venv" >&2
-	if ! "$python" -m pip install --quiet --disable-pip-version-check "mujoco==$MUJOCO_VERSION" >&2; then
-		echo "ci/peer_env.sh: pip could not install mujoco==$MUJOCO_VERSION: the MuJoCo peer is not installable here" >&2
-		exit 77
-	fi
+	pinned_venv_install ci/peer_env.sh "$venv" "mujoco==$MUJOCO_VERSION" MuJoCo
 	have || { echo "ci/peer_env.sh: mujoco==$MUJOCO_VERSION installed but does not import" >&2; exit 77; }
 fi
-if [ $# -eq 0 ]; then
-	echo "$python"
-else
-	PEER_PYTHON="$python" PATH="$venv/bin:$PATH" exec "$@"
-fi
+pinned_venv_run "$venv" "$@"
