@@ -20,6 +20,7 @@ namespace
 const double kStep = 1.0 / 240.0;
 const double kLayerStiffness = 1000, kLayerCap = 10, kElasticStiffness = 100;
 const double kYieldMoment = (kLayerStiffness + kElasticStiffness) * kLayerCap / kLayerStiffness;  // 11 N m
+const double kLinearScale = 150.0;  // the box's mass over its moment of inertia, 100 kg / (100 x 0.2^2 / 6) kg m^2
 
 struct Twist
 {
@@ -29,9 +30,14 @@ struct Twist
 	double workJ = 0;
 	double torqueNm = 0;
 
+	// layers 4: the same law on the linear DOF along x, stiffnesses and forces 150 times (N/m, N: the body's mass is 150
+	// times its moment of inertia, 100 kg against 0.667 kg m^2, so its motion is the twist's), the force 150 times
+	bool linear = false;
+
 	// layers: 2 (kinematic: a yielding layer beside an elastic one), 1 (one EPP spring, the control), 3 (isotropic: one
-	// layer of the whole stiffness whose cap grows by 110 N m/rad of its flow, a post-yield slope of 100 N m/rad)
-	explicit Twist(int layers)
+	// layer of the whole stiffness whose cap grows by 110 N m/rad of its flow, a post-yield slope of 100 N m/rad), 4 (2
+	// on the linear DOF along x)
+	explicit Twist(int layers) : linear(layers == 4)
 	{
 		body = w.addBox(btVector3(0.1, 0.1, 0.1), 100.0, btVector3(0, 0, 0));
 		joint.reset(new bt6DofElasticPlastic2Constraint(*body, btTransform::getIdentity()));
@@ -45,6 +51,12 @@ struct Twist
 		if (layers == 2)
 		{
 			joint->setHardeningLayers(5, 2, k, c);
+		}
+		else if (layers == 4)
+		{
+			const btScalar kx[2] = {btScalar(kLinearScale * kLayerStiffness), btScalar(kLinearScale * kElasticStiffness)};
+			const btScalar cx[2] = {btScalar(kLinearScale * kLayerCap), SIMD_INFINITY};
+			joint->setHardeningLayers(0, 2, kx, cx);
 		}
 		else if (layers == 3)
 		{
@@ -63,11 +75,19 @@ struct Twist
 	}
 	void step()
 	{
+		if (linear)
+		{
+			body->applyCentralForce(btVector3(btScalar(kLinearScale * torqueNm), 0, 0));
+			w.world.stepSimulation(btScalar(kStep), 0);
+			workJ += kLinearScale * torqueNm * double(body->getLinearVelocity().x()) * kStep;
+			return;
+		}
 		body->applyTorque(btVector3(0, 0, btScalar(torqueNm)));
 		w.world.stepSimulation(btScalar(kStep), 0);
 		workJ += torqueNm * double(body->getAngularVelocity().z()) * kStep;
 	}
-	double angle() const { return -double(joint->getAngle(2)); }  // Spring2 measures the twist the other way
+	// rad (Spring2 measures the twist the other way), or m along x for the linear DOF
+	double angle() const { return linear ? double(body->getCenterOfMassPosition().x()) : -double(joint->getAngle(2)); }
 	// ramps the torque to target over 16 s, holds it 2 s; the mean angle over the last second
 	double rampTo(double target)
 	{
@@ -126,6 +146,28 @@ TEST(Hardening, LayersFollowTheBilinearKinematicLaw)
 				"work %.4f J, elastic %.4f J, kinetic %.2e J; plastic rotation %.4f rad\n",
 				elastic, 8.0 / K, up, upExpected, unloaded, setExpected, down, -upExpected, isotropic, booked, dissipated, t.workJ, elasticEnd, kinetic,
 				double(t.joint->getCurrentPlasticRotation()));
+}
+
+// The same law on a linear DOF (patch 0028 keeps a linear DOF's equilibrium point apart from the step's spring):
+// 0.1 m at 3000 N, a set of 0.0818 m, -0.1 m at -3000 N, and 150 times the twist's dissipation, 405 J.
+TEST(Hardening, ALinearDofFollowsTheSameLaw)
+{
+	Twist t(4);
+	const double K = kLayerStiffness + kElasticStiffness;
+	const double up = t.rampTo(20.0);
+	const double upExpected = kYieldMoment / K + (20.0 - kYieldMoment) / kElasticStiffness;
+	EXPECT_NEAR(up, upExpected, 0.02 * upExpected);
+	const double unloaded = t.rampTo(0.0);
+	EXPECT_NEAR(unloaded, upExpected - 20.0 / K, 0.02 * upExpected);
+	EXPECT_NEAR(double(t.joint->getTranslationalLimitMotor()->m_equilibriumPoint[0]), unloaded, 0.02 * upExpected)
+		<< "the equilibrium point is the set";
+	const double down = t.rampTo(-20.0);
+	EXPECT_NEAR(down, -upExpected, 0.02 * upExpected);
+	const double dissipated = kLinearScale * kLayerCap * 3 * (upExpected - kLayerCap / kLayerStiffness);
+	EXPECT_NEAR(double(t.joint->getAbsorbedEnergy()), dissipated, 0.03 * dissipated);
+	EXPECT_NEAR(t.workJ, double(t.joint->getAbsorbedEnergy()) + double(t.joint->getElasticEnergy()) + t.w.kineticEnergy(t.body), 0.03 * t.workJ);
+	std::printf("[ info     ] linear: %.5f, set %.5f (equilibrium %.5f), %.5f m; booked %.2f J (%.2f)\n", up, unloaded,
+				double(t.joint->getTranslationalLimitMotor()->m_equilibriumPoint[0]), down, double(t.joint->getAbsorbedEnergy()), dissipated);
 }
 
 // Isotropic hardening: the same elastic stiffness, first yield and post-yield slope (1100 N m/rad to 11 N m, then 100)
