@@ -14,10 +14,10 @@ import json
 import os
 import subprocess
 import sys
-import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from charpy_friction_model import CharpyFrictionModel, STANDARD  # noqa: E402
+from sweep.csvfile import write_whole  # noqa: E402
 
 GEOMETRIES = {"standard": ["--geometry=standard"],
               "standard (ISO anvils)": ["--geometry=standard", "--anvil-radius=0.001", "--anvil-taper=0.192"],
@@ -41,14 +41,6 @@ def model_loss(result, mu):
     params["anvil_radius_m"] = result["anvil_edge_radius_m"]
     loss, _ = CharpyFrictionModel(**params).loss(mu)
     return loss
-
-
-def write_whole(path, text):
-    directory = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(dir=directory, prefix=".tmp-")
-    with os.fdopen(fd, "w") as f:
-        f.write(text)
-    os.replace(tmp, path)
 
 
 def sweep(runner, mus):

@@ -22,7 +22,7 @@ import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from sweep import runner as sweep  # noqa: E402
+from sweep import csvfile, runner as sweep  # noqa: E402
 
 PROJECT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 YOUNGS_MODULUS_PA = 200e9
@@ -38,9 +38,7 @@ def curve_file(directory, hardening):
     path = os.path.join(directory, "bilinear-%g.csv" % hardening)
     yield_strain = YIELD_STRESS_PA / YOUNGS_MODULUS_PA
     stress = YIELD_STRESS_PA + hardening * YOUNGS_MODULUS_PA * (0.2 - yield_strain)
-    with open(path + ".tmp", "w") as f:
-        f.write("strain,stress_pa\n%.17g,%.17g\n0.2,%.17g\n" % (yield_strain, YIELD_STRESS_PA, stress))
-    os.replace(path + ".tmp", path)
+    csvfile.write_whole(path, "strain,stress_pa\n%.17g,%.17g\n0.2,%.17g\n" % (yield_strain, YIELD_STRESS_PA, stress))
     return path
 
 
@@ -142,10 +140,7 @@ def main():
         "the first joint's length, that overstates the plastic curvature, less with each halving of the segments.",
         "",
     ]
-    tmp = a.out + ".tmp"
-    with open(tmp, "w") as f:
-        f.write("\n".join(lines))
-    os.replace(tmp, a.out)
+    csvfile.write_whole(a.out, "\n".join(lines))
     print("wrote %s" % a.out)
 
 

@@ -831,14 +831,6 @@ def summary(by, num, gone):
     return "\n".join(lines) + "\n"
 
 
-def write_whole(path, text):
-    tmp = path + ".tmp"
-    os.makedirs(os.path.dirname(path) or ".", exist_ok=True)
-    with open(tmp, "w") as f:
-        f.write(text)
-    os.replace(tmp, path)
-
-
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--runner", help="build/bin/structures: the project's cantilever and portal with each solver, same session")
@@ -871,7 +863,7 @@ def main(argv=None):
         first = ("key", "peer", "scene", "case", "segments", "softness", "solver", "iterations", "factor")
         csvfile.write_rows(args.csv, rows, first)
         rows = csvfile.read_rows(args.csv)  # the report is made from the CSV, as --from-csv makes it
-    write_whole(args.md, report(rows, seconds, args.command))
+    csvfile.write_whole(args.md, report(rows, seconds, args.command))
     print(f"{len(rows)} rows {'from ' + args.from_csv if args.from_csv else 'in ' + args.csv}; wrote {args.md}")
     return 0
 

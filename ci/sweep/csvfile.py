@@ -24,6 +24,17 @@ def columns_of(rows, first=()):
     return columns
 
 
+def write_whole(path, text):
+    """Writes text to path whole (tmp file + rename), making its folder."""
+    tmp = path + ".tmp"
+    directory = os.path.dirname(path)
+    if directory:
+        os.makedirs(directory, exist_ok=True)
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, path)
+
+
 def write_rows(path, rows, first=("key",)):
     """Writes rows whole (tmp file + rename); missing cells are empty."""
     tmp = path + ".tmp"

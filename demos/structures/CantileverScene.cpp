@@ -49,8 +49,9 @@ struct CantileverScene::State
 	}
 
 	double jointRotation(size_t j) const { return angles[j + 1].angle_rad() - angles[j].angle_rad(); }
-	// a pushover ends when the tip has been held at its drift for settle_s
-	double pushoverEnd_s() const { return p.tip_drift / p.drift_rate_per_s + p.settle_s; }
+	// a pushover's target reaches its drift at reach_s and is held there for settle_s
+	double pushoverReach_s() const { return p.tip_drift / p.drift_rate_per_s; }
+	double pushoverEnd_s() const { return pushoverReach_s() + p.settle_s; }
 
 	CantileverParameters p;
 	std::chrono::steady_clock::time_point start;
@@ -128,7 +129,7 @@ CantileverScene::CantileverScene(const CantileverParameters& p) : m(std::make_un
 			state->actuator.setFactor(force_n);
 			// measured on the way there, over the last 0.002 of drift (at most 0.1 s) before the target reaches it: a
 			// rigid-plastic hinge held still carries any moment up to its cap, so only a loading branch has a load ratio
-			const double reach_s = state->p.tip_drift / state->p.drift_rate_per_s;
+			const double reach_s = state->pushoverReach_s();
 			const double window_s = std::min(0.1, 0.002 / state->p.drift_rate_per_s);
 			if (state->rig.time_s() >= reach_s - window_s && state->rig.time_s() < reach_s)
 			{
