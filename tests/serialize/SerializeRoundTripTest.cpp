@@ -534,6 +534,28 @@ TEST(SerializeFormat, SettingsOutOfTheirRangeAreNotRestored)
 	}
 }
 
+// The fatigue settings are not in the file (patch 0031): a loaded hinge keeps the ones it was given before it loads,
+// and takes the file's four settings beside them.
+TEST(SerializeFormat, ALoadedConstraintKeepsItsFatigueSettings)
+{
+	World w;
+	btRigidBody* body = w.addBox(btVector3(1, 1, 1), 1, btVector3(0, 0, 0));
+	btPlasticHingeConstraint saved(*body, btVector3(0, 0, 0), btVector3(0, 0, 1));
+	saved.setPlasticMoment(btScalar(3));
+	saved.setMaxPlasticRotation(btScalar(0.7));
+	std::vector<char> buffer = serializeAlone(saved, btPlasticHingeConstraintDataName);
+	const btPlasticHingeConstraintData& data = *reinterpret_cast<const btPlasticHingeConstraintData*>(buffer.data());
+	btPlasticHingeConstraint loaded(*body, btVector3(0, 0, 0), btVector3(0, 0, 1));
+	btPlasticConstraintSettings fatigue = loaded.getPlasticSettings();
+	fatigue.m_fatigueDuctilityRotation = btScalar(0.5);
+	fatigue.m_fatigueDuctilityExponent = btScalar(-0.5);
+	ASSERT_TRUE(loaded.setPlasticSettings(fatigue));
+	deSerializeAlone(loaded, data);
+	EXPECT_EQ(btScalar(0.7), loaded.getMaxPlasticRotation());
+	EXPECT_EQ(btScalar(0.5), loaded.getPlasticSettings().m_fatigueDuctilityRotation);
+	EXPECT_EQ(btScalar(-0.5), loaded.getPlasticSettings().m_fatigueDuctilityExponent);
+}
+
 // The yield surface comes back only as setYieldSurface would take it (patch 0023): a structure naming a surface that
 // does not exist, or the same DOF twice (a damaged file), loads without a surface, as a file written before the
 // surface was serialized does (its fields read as 0, YIELD_BOX); the undamaged structure restores it.
