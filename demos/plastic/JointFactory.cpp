@@ -23,6 +23,11 @@ btPlasticConstraintSettings plasticSettings(const JointSpec& spec)
 	btPlasticConstraintSettings settings;
 	settings.m_maxPlasticRotation = btScalar(spec.max_plastic_rotation_rad);
 	settings.m_minStepsPerPeriod = btScalar(spec.min_steps_per_period);
+	if (spec.fatigue)
+	{
+		settings.m_fatigueDuctilityRotation = btScalar(fatigueDuctilityRotation_rad(spec));
+		settings.m_fatigueDuctilityExponent = btScalar(spec.fatigue->ductility_exponent);
+	}
 	return settings;
 }
 
@@ -115,6 +120,22 @@ SegmentStiffness jointStiffness(const JointSpec& spec)
 	return spec.stiffness ? *spec.stiffness : stiffness(spec.section, spec.material, spec.segment_length_m);
 }
 
+LowCycleFatigue universalSlopesFatigue(double reduction_of_area, double hinge_length_m)
+{
+	LowCycleFatigue f;
+	const double ductility = std::log(1 / (1 - reduction_of_area));
+	f.ductility_coefficient = std::pow(2.0, -0.4) * std::pow(ductility, 0.6);
+	f.ductility_exponent = -0.6;
+	f.hinge_length_m = hinge_length_m;
+	return f;
+}
+
+double fatigueDuctilityRotation_rad(const JointSpec& spec)
+{
+	if (!spec.fatigue) return 0;
+	return 2 * spec.fatigue->hinge_length_m * spec.fatigue->ductility_coefficient / spec.section.depth_m;
+}
+
 std::vector<std::string> validate(const JointSpec& spec)
 {
 	std::vector<std::string> errors = validate(spec.section);
@@ -149,6 +170,15 @@ std::vector<std::string> validate(const JointSpec& spec)
 		const std::pair<const char*, double> given[] = {{"stiffness.axial_n_m", k.axial_n_m}, {"stiffness.shear_n_m", k.shear_n_m}, {"stiffness.bending_y_nm_rad", k.bending_y_nm_rad}, {"stiffness.bending_z_nm_rad", k.bending_z_nm_rad}, {"stiffness.torsion_nm_rad", k.torsion_nm_rad}};
 		for (const auto& g : given)
 			if (!(g.second > 0 && std::isfinite(g.second))) notIn(g.first, g.second, "(0, inf) N/m or N m/rad");
+	}
+	if (spec.fatigue)
+	{
+		const LowCycleFatigue& f = *spec.fatigue;
+		if (!(f.ductility_coefficient > 0 && std::isfinite(f.ductility_coefficient))) notIn("fatigue.ductility_coefficient", f.ductility_coefficient, "(0, inf)");
+		if (!(f.ductility_exponent >= -1 && f.ductility_exponent <= -0.1)) notIn("fatigue.ductility_exponent", f.ductility_exponent, "[-1, -0.1]");
+		if (!(f.hinge_length_m > 0 && std::isfinite(f.hinge_length_m))) notIn("fatigue.hinge_length_m", f.hinge_length_m, "(0, inf) m");
+		if (spec.method != JointMethod::PlasticHinge && spec.method != JointMethod::ElasticPlastic && spec.method != JointMethod::ElasticPlastic2)
+			errors.push_back("fatigue: only the plastic methods (plastic-hinge, elastic-plastic, elastic-plastic2) break by fatigue");
 	}
 	if (spec.method == JointMethod::Brittle && !(spec.breaking_force_n > 0))
 	{

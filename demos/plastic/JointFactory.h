@@ -39,6 +39,22 @@ enum class YieldSurface
 	BendingTorsion,  // the main bending moment (about y) and the torque on the section's TorsionInteraction curve
 };
 
+// Low-cycle fatigue (patch 0030): the joint also breaks when Miner's sum over the half-cycles of its plastic rotation
+// reaches 1 under Coffin-Manson, eps_p / 2 = eps_f (2 N)^c, where eps_p is the plastic strain of the main bending's
+// extreme fibre: the plastic rotation over the hinge length times half the depth. The joint's rotation coefficient is
+// theta_f = 2 Lp eps_f / depth (fatigueDuctilityRotation_rad).
+struct LowCycleFatigue
+{
+	double ductility_coefficient = 0.5;  // eps_f' (strain), > 0
+	double ductility_exponent = -0.6;    // c, in [-1, -0.1]
+	double hinge_length_m = 0.01;        // Lp: the length of member whose plastic curvature the joint's rotation stands for, > 0
+};
+
+// Manson's method of universal slopes (1965): the plastic part of its strain range, D^0.6 N^-0.6 with the ductility
+// D = ln(1 / (1 - reduction of area)), is Coffin-Manson with c = -0.6 and eps_f = 2^-0.4 D^0.6. For a material
+// without measured constants; reduction_of_area in (0, 1).
+LowCycleFatigue universalSlopesFatigue(double reduction_of_area, double hinge_length_m);
+
 struct JointSpec
 {
 	JointMethod method = JointMethod::PlasticHinge;
@@ -64,7 +80,12 @@ struct JointSpec
 	// first yield come from the curve, the other DOFs keep the material's. Without it the joint is elastic-perfectly
 	// plastic at fy W_pl. In a step in which the DOF is rigid-plastic (too stiff for the step) it yields at fy W_pl.
 	std::optional<StressStrainCurve> stress_strain;
+	// the plastic methods: breaking by low-cycle fatigue beside max_plastic_rotation_rad (none: by rotation alone)
+	std::optional<LowCycleFatigue> fatigue;
 };
+
+// theta_f of spec.fatigue for the joint's section (2 Lp eps_f / depth), rad; 0 without fatigue
+double fatigueDuctilityRotation_rad(const JointSpec& spec);
 
 // A joint and, for the plastic methods, its plastic bookkeeping (the same interface for all three classes, kept
 // when the joint is made, so nothing has to find out later which class a joint is). The hinge-motor stand-in has

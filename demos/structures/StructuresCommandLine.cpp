@@ -29,8 +29,9 @@ using scene::numberFlag;
 using scene::switchFlag;
 using scene::wholeFlag;
 
+// the joint method and the world's solver settings
 template <class P>
-Flags<P> commonFlags()
+Flags<P> solverFlags()
 {
 	Flags<P> f;
 	f["method"] = {[](P& p, const std::string& t)
@@ -50,6 +51,13 @@ Flags<P> commonFlags()
 	f["erp"] = {[](P& p, const std::string& t)
 				{ return parseNumber(t, p.solver.world.erp); },
 				"FRACTION  the joints' error reduction parameter, default 0.2 (Bullet's)"};
+	return f;
+}
+
+template <class P>
+Flags<P> commonFlags()
+{
+	Flags<P> f = solverFlags<P>();
 	f["section-width"] = numberFlag(&P::section_width_m, "M  rectangle along the bending axis, default 0.05");
 	f["section-depth"] = numberFlag(&P::section_depth_m, "M  rectangle in the bending plane, default 0.1");
 	f["fy"] = numberFlag(&P::yield_stress_pa, "PA  yield stress, default 400e6 (Mp = fy b d^2 / 4 = 50 kN m)");
@@ -130,6 +138,29 @@ const Flags<DropWeightParameters>& dropWeightFlags()
 	return flags;
 }
 
+const Flags<PaperClipParameters>& paperClipFlags()
+{
+	static const Flags<PaperClipParameters> flags = []
+	{
+		using P = PaperClipParameters;
+		Flags<P> f = solverFlags<P>();
+		f["fy"] = numberFlag(&P::yield_stress_pa, "PA  yield stress, default 400e6 (Mp = fy d^3 / 6)");
+		f["youngs-modulus"] = numberFlag(&P::youngs_modulus_pa, "PA  default 200e9");
+		f["density"] = numberFlag(&P::density_kg_m3, "KG_M3  default 7800");
+		f["duration"] = numberFlag(&P::duration_s, "SECONDS  simulated time at most, default 30");
+		f["wire-diameter"] = numberFlag(&P::wire_diameter_m, "M  d, default 1e-3");
+		f["leg-length"] = numberFlag(&P::leg_length_m, "M  the bent leg, default 0.03");
+		f["amplitude"] = numberFlag(&P::bend_amplitude_rad, "RAD  A: bent to +-A, in (0, pi/2], default 0.785398 (45 degrees)");
+		f["period"] = numberFlag(&P::cycle_period_s, "SECONDS  T of one full cycle, default 1");
+		f["reduction-of-area"] = numberFlag(&P::reduction_of_area, "FRACTION  the wire's, in (0, 1): Coffin-Manson by universal slopes, default 0.6");
+		f["hinge-length"] = numberFlag(&P::hinge_length_m, "M  Lp, the bend's plastic length, default 2e-3");
+		// --hysteresis=FILE is read by parseStructuresCommandLine
+		f["hysteresis"] = {[](P&, const std::string&) { return true; }, "FILE  write the moment-rotation loops as an SVG plot (whole or not at all)"};
+		return f;
+	}();
+	return flags;
+}
+
 }  // namespace
 
 StructuresCommandLine parseStructuresCommandLine(const std::vector<std::string>& arguments)
@@ -149,10 +180,10 @@ StructuresCommandLine parseStructuresCommandLine(const std::vector<std::string>&
 			scene::setSwitch(*flag, name == "help" ? cl.help : cl.json, cl.errors);
 		else if (name == "scene")
 		{
-			if (value == "cantilever" || value == "portal" || value == "drop-weight")
+			if (value == "cantilever" || value == "portal" || value == "drop-weight" || value == "paper-clip")
 				cl.scene = value;
 			else
-				cl.errors.push_back("--scene: '" + value + "' is not valid; expected one of cantilever, portal, drop-weight");
+				cl.errors.push_back("--scene: '" + value + "' is not valid; expected one of cantilever, portal, drop-weight, paper-clip");
 		}
 		else
 			flags.push_back(*flag);
@@ -160,7 +191,7 @@ StructuresCommandLine parseStructuresCommandLine(const std::vector<std::string>&
 	if (cl.help) return cl;
 	if (cl.scene.empty() && cl.errors.empty())
 	{
-		cl.errors.push_back("--scene: missing; expected one of cantilever, portal, drop-weight");
+		cl.errors.push_back("--scene: missing; expected one of cantilever, portal, drop-weight, paper-clip");
 		return cl;
 	}
 	const std::string context = " for --scene=" + cl.scene;
@@ -184,19 +215,31 @@ StructuresCommandLine parseStructuresCommandLine(const std::vector<std::string>&
 		}
 		if (cl.scene == "portal") scene::applyFlag(portalFlags(), cl.portal, flag, cl.errors, context);
 		if (cl.scene == "drop-weight") scene::applyFlag(dropWeightFlags(), cl.dropWeight, flag, cl.errors, context);
+		if (cl.scene == "paper-clip")
+		{
+			scene::applyFlag(paperClipFlags(), cl.paperClip, flag, cl.errors, context);
+			if (flag.name == "hysteresis")
+			{
+				if (flag.value.empty())
+					cl.errors.push_back("--hysteresis: needs a file name (--hysteresis=FILE.svg)");
+				else
+					cl.hysteresisPath = flag.value;
+			}
+		}
 	}
 	if (!cl.errors.empty()) return cl;
 	std::vector<std::string> invalid;
 	if (cl.scene == "cantilever") invalid = validateCantileverParameters(cl.cantilever);
 	if (cl.scene == "portal") invalid = validatePortalParameters(cl.portal);
 	if (cl.scene == "drop-weight") invalid = validateDropWeightParameters(cl.dropWeight);
+	if (cl.scene == "paper-clip") invalid = validatePaperClipParameters(cl.paperClip);
 	cl.errors.insert(cl.errors.end(), invalid.begin(), invalid.end());
 	return cl;
 }
 
 std::string structuresUsage()
 {
-	return "usage: structures --scene=cantilever|portal|drop-weight [--json] [flags]\n"
+	return "usage: structures --scene=cantilever|portal|drop-weight|paper-clip [--json] [flags]\n"
 		   "Runs a structure with a textbook answer headless and prints the simulated result beside the answer.\n"
 		   "--scene=cantilever: a tip-loaded cantilever (collapse at P = Mp / L; a dead load above it stops where\n"
 		   "P L sin(theta) = Mp theta)\n" +
@@ -206,6 +249,10 @@ std::string structuresUsage()
 		   scene::usageOf(portalFlags()) +
 		   "--scene=drop-weight: a ball strikes a simply supported or clamped beam at mid-span (kinetic energy\n"
 		   "after the impact = Mp x sum of hinge rotations)\n" +
-		   scene::usageOf(dropWeightFlags());
+		   scene::usageOf(dropWeightFlags()) +
+		   "--scene=paper-clip: a steel wire bent back and forth through +-A by a hand until it breaks by low-cycle\n"
+		   "fatigue (Coffin-Manson with Miner's rule over the joint's plastic half-cycles; the answer is the\n"
+		   "rigid-plastic joint's, whose plastic rotation is the driven one)\n" +
+		   scene::usageOf(paperClipFlags());
 }
 }  // namespace structures

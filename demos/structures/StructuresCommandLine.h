@@ -8,16 +8,19 @@
 
 #include "Cantilever.h"
 #include "DropWeight.h"
+#include "PaperClip.h"
 #include "Portal.h"
 
 namespace structures
 {
 struct StructuresCommandLine
 {
-	std::string scene;  // cantilever, portal, drop-weight
+	std::string scene;  // cantilever, portal, drop-weight, paper-clip
 	CantileverParameters cantilever;
 	PortalParameters portal;
 	DropWeightParameters dropWeight;
+	PaperClipParameters paperClip;
+	std::string hysteresisPath;  // paper-clip: --hysteresis=FILE.svg, the moment-rotation loops
 	bool help = false;
 	bool json = false;
 	std::vector<std::string> errors;

@@ -1,7 +1,9 @@
 #include "StructuresOutput.h"
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <sstream>
 
 namespace structures
@@ -152,5 +154,85 @@ std::string toSummary(const DropWeightParameters& p, const DropWeightResult& r)
 	out << "  Mp x rotations " << r.geometric_plastic_work_j << " J (" << r.plastic_work_error_pct << " % against the estimate), booked "
 		<< r.booked_plastic_work_j << " J, kinetic at the end " << r.kinetic_end_j << " J, balance error " << r.balance_error_pct << " %\n";
 	return out.str();
+}
+std::string toJson(const PaperClipParameters& p, const PaperClipResult& r)
+{
+	Json j = solverJson("paper-clip", p.solver);
+	const PaperClipAnswer& a = r.answer;
+	j.add("wire_diameter_m", p.wire_diameter_m).add("amplitude_rad", p.bend_amplitude_rad).add("period_s", p.cycle_period_s).add("hinge_length_m", p.hinge_length_m).add("reduction_of_area", p.reduction_of_area).add("plastic_moment_Nm", a.plastic_moment_nm).add("ductility_rotation_rad", a.ductility_rotation_rad).add("ductility_exponent", a.ductility_exponent).add("analytic_break_time_s", a.break_time_s).add("analytic_cycles_to_break", a.cycles_to_break).add("constant_amplitude_cycles", a.constant_amplitude_cycles).add("broken", r.broken).add("break_time_s", r.break_time_s).add("cycles_to_break", r.cycles_to_break).add("cycles_error_pct", 100 * (r.cycles_to_break - a.cycles_to_break) / a.cycles_to_break).add("fatigue_damage", r.fatigue_damage).add("plastic_rotation_rad", r.plastic_rotation_rad).add("peak_moment_Nm", r.peak_moment_nm).add("hand_work_J", r.hand_work_j).add("booked_plastic_work_J", r.plastic_work_j).add("elastic_J", r.elastic_j).add("kinetic_J", r.kinetic_j).add("start_kinetic_J", r.start_kinetic_j).add("energy_balance_error_pct", r.energy_balance_error_pct).add("steps", r.steps).add("simulated_s", r.simulated_s).add("finite", r.finite);
+	return j.str();
+}
+
+std::string toSummary(const PaperClipParameters& p, const PaperClipResult& r)
+{
+	std::ostringstream out;
+	const PaperClipAnswer& a = r.answer;
+	out << "paper clip, " << plastic::jointMethodName(p.solver.method) << ", " << plastic::solverKindName(p.solver.world.solver) << ", dt " << p.solver.world.internal_step_s << " s: " << r.steps
+		<< " steps (" << r.simulated_s << " s simulated)\n";
+	out << "  wire " << p.wire_diameter_m * 1e3 << " mm bent +-" << p.bend_amplitude_rad << " rad every " << p.cycle_period_s << " s; Mp " << a.plastic_moment_nm
+		<< " N m; Coffin-Manson theta_f " << a.ductility_rotation_rad << " rad, c " << a.ductility_exponent << "\n";
+	out << "  " << (r.broken ? "broke after " + number(r.cycles_to_break) + " cycles" : std::string("did not break")) << " (Coffin-Manson and Miner on the driven angle: "
+		<< a.cycles_to_break << " cycles; constant amplitude from the start: " << a.constant_amplitude_cycles << "), fatigue damage " << r.fatigue_damage << "\n";
+	out << "  hand's work " << r.hand_work_j << " J = booked plastic " << r.plastic_work_j << " J + elastic " << r.elastic_j << " J + kinetic change "
+		<< r.kinetic_j - r.start_kinetic_j << " J (balance error " << r.energy_balance_error_pct << " %); peak moment " << r.peak_moment_nm << " N m\n";
+	return out.str();
+}
+
+std::string hysteresisSvg(const PaperClipParameters& p, const PaperClipResult& r)
+{
+	const double width = 640, height = 480, left = 70, right = 20, top = 40, bottom = 50;
+	const double mp = r.answer.plastic_moment_nm;
+	double xMax = p.bend_amplitude_rad * 1.1, yMax = 1.2;
+	for (const HysteresisSample& s : r.hysteresis) yMax = std::max(yMax, 1.05 * std::fabs(s.moment_nm) / mp);
+	yMax = std::min(yMax, 5.0);
+	auto X = [&](double x) { return left + (x + xMax) / (2 * xMax) * (width - left - right); };
+	auto Y = [&](double y) { return top + (yMax - std::max(-yMax, std::min(yMax, y))) / (2 * yMax) * (height - top - bottom); };
+	std::ostringstream svg;
+	char buf[256];
+	svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
+	svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+	std::snprintf(buf, sizeof buf, "paper clip, %s: moment / Mp against rotation; %s", plastic::jointMethodName(p.solver.method),
+				  r.broken ? ("broke after " + number(r.cycles_to_break) + " cycles (rule: " + number(r.answer.cycles_to_break) + ")").c_str() : "not broken");
+	svg << "<text x=\"" << left << "\" y=\"22\">" << buf << "</text>\n";
+	// axes and the +-Mp lines
+	svg << "<line x1=\"" << X(-xMax) << "\" y1=\"" << Y(0) << "\" x2=\"" << X(xMax) << "\" y2=\"" << Y(0) << "\" stroke=\"black\"/>\n";
+	svg << "<line x1=\"" << X(0) << "\" y1=\"" << Y(yMax) << "\" x2=\"" << X(0) << "\" y2=\"" << Y(-yMax) << "\" stroke=\"black\"/>\n";
+	for (double m : {1.0, -1.0})
+		svg << "<line x1=\"" << X(-xMax) << "\" y1=\"" << Y(m) << "\" x2=\"" << X(xMax) << "\" y2=\"" << Y(m) << "\" stroke=\"gray\" stroke-dasharray=\"4 4\"/>\n";
+	svg << "<text x=\"" << X(xMax) - 60 << "\" y=\"" << Y(1) - 4 << "\" fill=\"gray\">M = Mp</text>\n";
+	svg << "<text x=\"" << (left + width - right) / 2 - 40 << "\" y=\"" << height - 12 << "\">rotation, rad (+-" << number(xMax) << ")</text>\n";
+	svg << "<text x=\"12\" y=\"" << top + 10 << "\">M / Mp (+-" << number(yMax) << ")</text>\n";
+	svg << "<polyline fill=\"none\" stroke=\"#c03000\" stroke-width=\"1.2\" points=\"";
+	const size_t stride = std::max<size_t>(1, r.hysteresis.size() / 4000);
+	for (size_t i = 0; i < r.hysteresis.size(); i += stride)
+	{
+		std::snprintf(buf, sizeof buf, "%.1f,%.1f ", X(r.hysteresis[i].rotation_rad), Y(r.hysteresis[i].moment_nm / mp));
+		svg << buf;
+	}
+	svg << "\"/>\n</svg>\n";
+	return svg.str();
+}
+
+bool writeWhole(const std::string& path, const std::string& text, std::string* error)
+{
+	const std::string tmp = path + ".tmp";
+	{
+		std::ofstream out(tmp, std::ios::binary);
+		out << text;
+		out.flush();
+		if (!out)
+		{
+			std::remove(tmp.c_str());
+			if (error) *error = "cannot write '" + tmp + "'";
+			return false;
+		}
+	}
+	if (std::rename(tmp.c_str(), path.c_str()) != 0)
+	{
+		std::remove(tmp.c_str());
+		if (error) *error = "cannot rename '" + tmp + "' to '" + path + "'";
+		return false;
+	}
+	return true;
 }
 }  // namespace structures

@@ -1,4 +1,4 @@
-// build/bin/structures: structures with textbook answers (cantilever, portal frame, drop weight), headless, no
+// build/bin/structures: structures with textbook answers (cantilever, portal frame, drop weight, paper clip), headless, no
 // OpenGL. See --help.
 #include <iostream>
 #include <stdexcept>
@@ -33,6 +33,21 @@ int main(int argc, char** argv)
 		{
 			const PortalResult r = runPortal(cl.portal);
 			std::cout << (cl.json ? toJson(cl.portal, r) + "\n" : toSummary(cl.portal, r));
+			finite = r.finite;
+		}
+		else if (cl.scene == "paper-clip")
+		{
+			const PaperClipResult r = runPaperClip(cl.paperClip);
+			if (!cl.hysteresisPath.empty())
+			{
+				std::string error;
+				if (!writeWhole(cl.hysteresisPath, hysteresisSvg(cl.paperClip, r), &error))
+				{
+					std::cerr << "structures: --hysteresis: " << error << "\n";
+					return 2;
+				}
+			}
+			std::cout << (cl.json ? toJson(cl.paperClip, r) + "\n" : toSummary(cl.paperClip, r));
 			finite = r.finite;
 		}
 		else
