@@ -13,6 +13,9 @@
 #   energy.png, joint-energy.png            energies against time, plastic energy per joint
 # and the same ball against a building of five storeys and four bays (200 plastic joints) to build/building-report/
 #   (the same files; the animation is building.gif)
+# and the paper clip (a wire bent +-45 degrees until it breaks by low-cycle fatigue) to build/paper-clip-report/:
+#   summary.txt, result.json, hysteresis.svg   the structures runner (cycles to break beside Coffin-Manson's)
+#   frames/frame<n>.png                       the ExampleBrowser app through OSMesa, every 15th 60 Hz frame
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/deps.sh
@@ -60,3 +63,13 @@ head -n 3 "$building/summary.txt"
 	--png_file=frame --png_skip_frames=1 --fixed_timestep=0.0166667 --max_frames=180 --width=640 --height=400 >/dev/null)
 python3 ci/game_pictures.py --history="$building/history.csv" --joints="$building/joints.csv" --frames="$building/frames" --out-dir="$building" --fps=30 --gif-name=building.gif
 echo "report written to $building/ (summary.txt, result.json, joints.csv, history.csv, frames/, building.gif, energy.png, joint-energy.png)"
+
+# the paper clip: bent until it breaks (4.5 cycles of 1 s), its moment-rotation loops, and the run rendered
+clip="$build/paper-clip-report"
+rm -rf "$clip"
+mkdir -p "$clip/frames"
+"$build/bin/structures" --scene=paper-clip --hysteresis="$clip/hysteresis.svg" | tee "$clip/summary.txt"
+"$build/bin/structures" --scene=paper-clip --json > "$clip/result.json.tmp" && mv "$clip/result.json.tmp" "$clip/result.json"
+(cd "$clip/frames" && "$bin/plasticity_browser" --window_backend=osmesa "--start_demo_name=Paper clip" \
+	--png_file=frame --png_skip_frames=14 --fixed_timestep=0.0166667 --max_frames=300 --width=800 --height=600 >/dev/null)
+echo "report written to $clip/ (summary.txt, result.json, hysteresis.svg, frames/)"

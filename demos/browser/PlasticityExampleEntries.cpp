@@ -44,6 +44,10 @@ const ExampleEntry kPlasticityExamples[] = {
 	 PortalExampleCreateFunc, 0},
 	{1, "Drop weight", "A ball strikes a simply supported or clamped beam: kinetic energy after the impact = Mp x hinge rotations.",
 	 DropWeightExampleCreateFunc, 0},
+	{1, "Paper clip",
+	 "A steel wire bent back and forth by a hand until it breaks by low-cycle fatigue: Coffin-Manson with Miner's rule "
+	 "over the joint's plastic half-cycles gives the cycles. build/bin/structures --scene=paper-clip runs it.",
+	 PaperClipExampleCreateFunc, 0},
 	{0, "Game", "A steel frame at 60 Hz frames with the toolkit's game solver settings.", 0, 0},
 	{1, "Wrecking ball",
 	 "A wrecking ball on a chain hits a steel portal frame of plastic I-section joints: it bends, keeps its "

@@ -210,6 +210,11 @@ CommonExampleInterface* DropWeightExampleCreateFunc(CommonExampleOptions& option
 	return new SceneExample(options.m_guiHelper, structures::dropWeightControls(), options.m_option);
 }
 
+CommonExampleInterface* PaperClipExampleCreateFunc(CommonExampleOptions& options)
+{
+	return new SceneExample(options.m_guiHelper, structures::paperClipControls(), options.m_option);
+}
+
 CommonExampleInterface* WreckingBallExampleCreateFunc(CommonExampleOptions& options)
 {
 	return new SceneExample(options.m_guiHelper, game::wreckingBallControls(), options.m_option);

@@ -12,5 +12,6 @@ CommonExampleInterface* CharpyExampleCreateFunc(CommonExampleOptions& options);
 CommonExampleInterface* CantileverExampleCreateFunc(CommonExampleOptions& options);
 CommonExampleInterface* PortalExampleCreateFunc(CommonExampleOptions& options);
 CommonExampleInterface* DropWeightExampleCreateFunc(CommonExampleOptions& options);
+CommonExampleInterface* PaperClipExampleCreateFunc(CommonExampleOptions& options);
 CommonExampleInterface* WreckingBallExampleCreateFunc(CommonExampleOptions& options);
 CommonExampleInterface* BuildingExampleCreateFunc(CommonExampleOptions& options);

@@ -162,12 +162,13 @@ scene::SceneLedger PaperClipScene::ledger() const
 	scene::SceneLedger l;
 	l.title = std::string("paper clip, ") + plastic::jointMethodName(m->p.solver.method);
 	l.time_s = r.simulated_s;
-	l.load_work_j = r.hand_work_j;
-	l.kinetic_j = r.kinetic_j - m->startKinetic_j;
+	// the energy in: the hand's work and the leg's kinetic energy at the start
+	l.load_work_j = r.hand_work_j + r.start_kinetic_j;
+	l.kinetic_j = r.kinetic_j;
 	l.plastic_booked_j = r.plastic_work_j;
 	l.plastic_measured_j = r.plastic_work_j;
 	char line[160];
-	std::snprintf(line, sizeof line, "Coffin-Manson + Miner (rigid-plastic): breaks after %.2f cycles", r.answer.cycles_to_break);
+	std::snprintf(line, sizeof line, "Coffin-Manson: breaks after %.2f cycles", r.answer.cycles_to_break);
 	l.answer.push_back(line);
 	std::snprintf(line, sizeof line, "cycles %.2f, fatigue damage %.3f", r.simulated_s / m->p.cycle_period_s, r.fatigue_damage);
 	l.status.push_back(line);

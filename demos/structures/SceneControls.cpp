@@ -74,6 +74,19 @@ DropWeightParameters dropWeightFromSliders(const std::vector<float>& v, plastic:
 	return p;
 }
 
+PaperClipParameters paperClipFromSliders(const std::vector<float>& v, plastic::JointMethod method)
+{
+	requireCount(v, 7, "paper clip");
+	PaperClipParameters p;
+	p.bend_amplitude_rad = double(v[0]) * 3.14159265358979323846 / 180;
+	p.cycle_period_s = double(v[1]);
+	p.wire_diameter_m = double(v[2]) * 1e-3;
+	p.hinge_length_m = double(v[3]) * 1e-3;
+	p.reduction_of_area = double(v[4]);
+	solverFrom(v, 5, p.solver, method);
+	return p;
+}
+
 scene::ControlledScene cantileverControls()
 {
 	scene::ControlledScene c;
@@ -146,6 +159,30 @@ scene::ControlledScene dropWeightControls()
 	};
 	// from +z, level: the beam, the weight on it and the depth it is pushed to
 	c.time_scale = 0.05f;  // the impact is over in 0.05 s
+	return c;
+}
+
+scene::ControlledScene paperClipControls()
+{
+	scene::ControlledScene c;
+	c.name = "paper clip";
+	c.methods = {"plastic-hinge", "elastic-plastic", "elastic-plastic2"};  // the methods that break by fatigue
+	c.method = "plastic-hinge";
+	c.sliders = {{"bend amplitude (degrees)", 5, 90, false, 45},
+				 {"cycle period (s)", 0.2f, 5, false, 1},
+				 {"wire diameter (mm)", 0.3f, 3, false, 1},
+				 {"hinge length (mm)", 0.5f, 10, false, 2},
+				 {"reduction of area", 0.1f, 0.9f, false, 0.6f},
+				 kStep,
+				 kIterations};
+	c.build = [](const std::vector<float>& v, const std::string& m) -> std::unique_ptr<scene::SteppedScene>
+	{
+		const PaperClipParameters p = paperClipFromSliders(v, scene::structureMethod(m));
+		requireValid(validatePaperClipParameters(p));
+		return std::make_unique<PaperClipScene>(p);
+	};
+	// from +z, level: the leg and the arc it is bent through; in real time (a cycle a second)
+	c.time_scale = 1;
 	return c;
 }
 }  // namespace structures

@@ -6,6 +6,7 @@
 
 #include "Cantilever.h"
 #include "DropWeight.h"
+#include "PaperClip.h"
 #include "plastic/JointFactory.h"
 #include "Portal.h"
 #include "scene/ControlledScene.h"
@@ -17,8 +18,10 @@ namespace structures
 CantileverParameters cantileverFromSliders(const std::vector<float>& values, plastic::JointMethod method);
 PortalParameters portalFromSliders(const std::vector<float>& values, plastic::JointMethod method);
 DropWeightParameters dropWeightFromSliders(const std::vector<float>& values, plastic::JointMethod method);
+PaperClipParameters paperClipFromSliders(const std::vector<float>& values, plastic::JointMethod method);
 
 scene::ControlledScene cantileverControls();
 scene::ControlledScene portalControls();
 scene::ControlledScene dropWeightControls();
+scene::ControlledScene paperClipControls();
 }  // namespace structures

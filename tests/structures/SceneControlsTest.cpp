@@ -36,12 +36,19 @@ TEST(SceneControls, StartAtTheRunnersDefaults)
 	EXPECT_NEAR(d.solver.world.internal_step_s, dd.solver.world.internal_step_s, 1e-9);
 	EXPECT_EQ(d.solver.world.iterations, dd.solver.world.iterations);
 	EXPECT_EQ(d.solver.world.solver, dd.solver.world.solver);
+	const PaperClipParameters k = paperClipFromSliders(scene::initialValues(paperClipControls()), plastic::JointMethod::PlasticHinge);
+	const PaperClipParameters kd;
+	EXPECT_NEAR(k.bend_amplitude_rad, kd.bend_amplitude_rad, 1e-6);
+	EXPECT_EQ(k.cycle_period_s, kd.cycle_period_s);
+	EXPECT_NEAR(k.wire_diameter_m, kd.wire_diameter_m, 1e-12);
+	EXPECT_NEAR(k.hinge_length_m, kd.hinge_length_m, 1e-12);
+	EXPECT_NEAR(k.reduction_of_area, kd.reduction_of_area, 1e-7);
 }
 
 // Every slider at its minimum and at its maximum still builds a scene (the ranges are inside the parameters' ranges).
 TEST(SceneControls, EverySliderRangeBuilds)
 {
-	for (const scene::ControlledScene& scene : {cantileverControls(), portalControls(), dropWeightControls()})
+	for (const scene::ControlledScene& scene : {cantileverControls(), portalControls(), dropWeightControls(), paperClipControls()})
 		for (size_t i = 0; i < scene.sliders.size(); i++)
 			for (float v : {scene.sliders[i].min, scene.sliders[i].max})
 			{
