@@ -168,7 +168,7 @@ scene::SceneLedger PaperClipScene::ledger() const
 	l.plastic_booked_j = r.plastic_work_j;
 	l.plastic_measured_j = r.plastic_work_j;
 	char line[160];
-	std::snprintf(line, sizeof line, "Coffin-Manson: breaks after %.2f cycles", r.answer.cycles_to_break);
+	std::snprintf(line, sizeof line, "Coffin-Manson: %.2f cycles", r.answer.cycles_to_break);
 	l.answer.push_back(line);
 	std::snprintf(line, sizeof line, "cycles %.2f, fatigue damage %.3f", r.simulated_s / m->p.cycle_period_s, r.fatigue_damage);
 	l.status.push_back(line);
