@@ -49,6 +49,9 @@ struct CantileverParameters
 	// drift (a loading branch: a rigid-plastic hinge held still carries any moment up to its cap), reported with the
 	// drift the tip had then
 	double tip_drift = 0;
+	// not empty (with tip_drift 0): a cyclic pushover, the actuator's target driven through these drifts in order
+	// (negative: up) at drift_rate_per_s, then held settle_s; the load ratio is measured before each, as above
+	std::vector<double> cyclic_drifts;
 	double drift_rate_per_s = 0.02;
 	double settle_s = 1.0;
 	// the support's joint stands for half a segment (BeamSpec::support_joint_half_length)
@@ -81,6 +84,8 @@ struct CantileverResult
 	int holds = 0;                        // ramp: how many times the load was held (more than one: softening or vibration was not a collapse)
 	double measured_tip_drift = 0;        // pushover: the tip's downward displacement / L, over the same window
 	double drift_load_ratio = 0;          // pushover: the actuator's force P L / Mp over the last 0.002 of drift
+	std::vector<double> cyclic_load_ratios;     // cyclic: the same before each of cyclic_drifts (P down positive)
+	std::vector<double> cyclic_measured_drifts; // and the tip's drift then
 	int solver_fallbacks = 0;             // internal steps in which btMLCPSolver fell back to sequential impulse
 	long steps = 0;
 	double simulated_s = 0;

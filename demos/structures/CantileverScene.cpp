@@ -49,9 +49,41 @@ struct CantileverScene::State
 	}
 
 	double jointRotation(size_t j) const { return angles[j + 1].angle_rad() - angles[j].angle_rad(); }
-	// a pushover's target reaches its drift at reach_s and is held there for settle_s
-	double pushoverReach_s() const { return p.tip_drift / p.drift_rate_per_s; }
-	double pushoverEnd_s() const { return pushoverReach_s() + p.settle_s; }
+	// a pushover's targets: tip_drift, or the cyclic drifts in order
+	std::vector<double> driftTargets() const
+	{
+		if (!p.cyclic_drifts.empty()) return p.cyclic_drifts;
+		if (p.tip_drift > 0) return {p.tip_drift};
+		return {};
+	}
+	bool pushover() const { return !driftTargets().empty(); }
+	// the time the target reaches the k-th drift (at the drift rate from the one before, from 0 at first)
+	double pushoverReach_s(size_t k) const
+	{
+		const std::vector<double> d = driftTargets();
+		double t = 0, from = 0;
+		for (size_t i = 0; i <= k && i < d.size(); i++)
+		{
+			t += std::fabs(d[i] - from) / p.drift_rate_per_s;
+			from = d[i];
+		}
+		return t;
+	}
+	// the target's drift at time t: along the targets at the drift rate, then held at the last one
+	double targetDrift(double t) const
+	{
+		const std::vector<double> d = driftTargets();
+		double start = 0, from = 0;
+		for (size_t i = 0; i < d.size(); i++)
+		{
+			const double reach = start + std::fabs(d[i] - from) / p.drift_rate_per_s;
+			if (t < reach) return from + (d[i] > from ? 1 : -1) * p.drift_rate_per_s * (t - start);
+			start = reach;
+			from = d[i];
+		}
+		return from;
+	}
+	double pushoverEnd_s() const { return pushoverReach_s(driftTargets().size() - 1) + p.settle_s; }
 
 	CantileverParameters p;
 	std::chrono::steady_clock::time_point start;
@@ -65,9 +97,10 @@ struct CantileverScene::State
 	double actuatorStiffness_n_m = 0;
 	double actuatorDamping_n_s_m = 0;
 	double actuatorIntegral_n = 0;  // the integral action: what the spring's lag leaves, driven to zero at 5 rad/s
-	double actuatorForceSum_n = 0;
-	double actuatorDriftSum = 0;
-	int actuatorSamples = 0;
+	// over the window before each target is reached
+	std::vector<double> actuatorForceSum_n;
+	std::vector<double> actuatorDriftSum;
+	std::vector<int> actuatorSamples;
 	CollapseTest test;
 	std::vector<scene::PlanarAngle> angles;  // the ground, then each segment
 	plastic::EnergyLedger ledger;
@@ -88,9 +121,13 @@ CantileverScene::CantileverScene(const CantileverParameters& p) : m(std::make_un
 	State& s = *m;
 	for (btRigidBody* b : s.beam.segments()) b->setCollisionFlags(b->getCollisionFlags() | btCollisionObject::CF_NO_CONTACT_RESPONSE);
 	s.ramp = p.ramp_rate_per_s > 0;
-	s.load.setFactor(s.ramp || p.tip_drift > 0 ? 0.0 : p.load_ratio);
+	s.load.setFactor(s.ramp || s.pushover() ? 0.0 : p.load_ratio);
+	const size_t targets = s.driftTargets().size();
+	s.actuatorForceSum_n.assign(targets, 0.0);
+	s.actuatorDriftSum.assign(targets, 0.0);
+	s.actuatorSamples.assign(targets, 0);
 	s.actuator.setFactor(0.0);
-	if (p.tip_drift > 0)
+	if (s.pushover())
 	{
 		// a stiff spring on the tip (100 times the member's elastic tip stiffness 3 E I / L^3), soft enough to be stable
 		// with the tip segment's mass at the step (k dt^2 / m <= 1/4), critically damped, with an integral action (5 rad/s)
@@ -116,10 +153,11 @@ CantileverScene::CantileverScene(const CantileverParameters& p) : m(std::make_un
 			state->load.setFactor(state->test.factor());
 		}
 		state->load.apply();
-		if (state->p.tip_drift > 0)
+		if (state->pushover())
 		{
-			// the actuator's target goes down at the drift rate to the drift, then stays
-			const double target_m = -state->p.length_m * std::min(state->p.tip_drift, state->p.drift_rate_per_s * state->rig.time_s());
+			// the actuator's target goes at the drift rate to each drift (down first for a positive one), then stays
+			const double target_m = state->p.cyclic_drifts.empty() ? -state->p.length_m * std::min(state->p.tip_drift, state->p.drift_rate_per_s * state->rig.time_s())
+																	: -state->p.length_m * state->targetDrift(state->rig.time_s());
 			const btRigidBody& tip = *state->beam.segments().back();
 			const btVector3 point = state->actuator.point_m();
 			const double velocity = double(tip.getVelocityInLocalPoint(point - tip.getCenterOfMassPosition()).y());
@@ -129,13 +167,16 @@ CantileverScene::CantileverScene(const CantileverParameters& p) : m(std::make_un
 			state->actuator.setFactor(force_n);
 			// measured on the way there, over the last 0.002 of drift (at most 0.1 s) before the target reaches it: a
 			// rigid-plastic hinge held still carries any moment up to its cap, so only a loading branch has a load ratio
-			const double reach_s = state->pushoverReach_s();
 			const double window_s = std::min(0.1, 0.002 / state->p.drift_rate_per_s);
-			if (state->rig.time_s() >= reach_s - window_s && state->rig.time_s() < reach_s)
+			for (size_t k = 0; k < state->actuatorSamples.size(); k++)
 			{
-				state->actuatorForceSum_n += force_n;
-				state->actuatorDriftSum += -double(point.y()) / state->p.length_m;
-				state->actuatorSamples++;
+				const double reach_s = state->pushoverReach_s(k);
+				if (state->rig.time_s() >= reach_s - window_s && state->rig.time_s() < reach_s)
+				{
+					state->actuatorForceSum_n[k] += force_n;
+					state->actuatorDriftSum[k] += -double(point.y()) / state->p.length_m;
+					state->actuatorSamples[k]++;
+				}
 			}
 		}
 		state->actuator.apply();
@@ -151,7 +192,7 @@ CantileverScene::~CantileverScene() = default;
 
 bool CantileverScene::done() const
 {
-	const double end_s = m->p.tip_drift > 0 ? std::min(m->p.duration_s, m->pushoverEnd_s()) : m->p.duration_s;
+	const double end_s = m->pushover() ? std::min(m->p.duration_s, m->pushoverEnd_s()) : m->p.duration_s;
 	return m->finished || m->rig.time_s() >= end_s - 1e-12;
 }
 double CantileverScene::time_s() const { return m->rig.time_s(); }
@@ -186,7 +227,7 @@ void CantileverScene::step()
 			s.finished = true;
 		}
 	}
-	else if (!s.p.follower_load && s.p.load_ratio > 1 && s.p.tip_drift <= 0)
+	else if (!s.p.follower_load && s.p.load_ratio > 1 && !s.pushover())
 	{
 		const double kinetic = s.ledger.measure().kinetic_j;
 		s.maxKinetic = std::max(s.maxKinetic, kinetic);
@@ -215,8 +256,20 @@ CantileverResult CantileverScene::result() const
 	r.root_rotation_rad = -s.jointRotation(0);
 	for (size_t j = 0; j < s.atThird.size(); j++) r.creep_rad = std::max(r.creep_rad, std::fabs(s.jointRotation(j) - s.atThird[j]));
 	r.load_work_j = s.load.work_j() + s.actuator.work_j();
-	r.measured_tip_drift = s.actuatorSamples ? s.actuatorDriftSum / s.actuatorSamples : 0.0;
-	r.drift_load_ratio = s.actuatorSamples ? s.actuatorForceSum_n / s.actuatorSamples * s.p.length_m / s.answer.plastic_moment_nm : 0.0;
+	for (size_t k = 0; k < s.actuatorSamples.size(); k++)
+	{
+		const int n = s.actuatorSamples[k];
+		r.cyclic_measured_drifts.push_back(n ? s.actuatorDriftSum[k] / n : 0.0);
+		r.cyclic_load_ratios.push_back(n ? s.actuatorForceSum_n[k] / n * s.p.length_m / s.answer.plastic_moment_nm : 0.0);
+	}
+	// the last target's
+	r.measured_tip_drift = r.cyclic_measured_drifts.empty() ? 0.0 : r.cyclic_measured_drifts.back();
+	r.drift_load_ratio = r.cyclic_load_ratios.empty() ? 0.0 : r.cyclic_load_ratios.back();
+	if (s.p.cyclic_drifts.empty())
+	{
+		r.cyclic_load_ratios.clear();
+		r.cyclic_measured_drifts.clear();
+	}
 	r.kinetic_j = s.ledger.measure().kinetic_j;
 	for (size_t j = 0; j < s.beam.joints().size(); j++) r.geometric_plastic_work_j += mp * std::fabs(s.jointRotation(j));
 	r.booked_plastic_work_j = s.beam.plasticWork_j();

@@ -91,6 +91,20 @@ const Flags<CantileverParameters>& cantileverFlags()
 		f["load-ratio"] = numberFlag(&P::load_ratio, "P_L_OVER_MP  constant tip load, default 1.5");
 		f["follower"] = switchFlag(&P::follower_load, "the load turns with the tip (default: dead load along -y)");
 		f["tip-drift"] = numberFlag(&P::tip_drift, "FRACTION  > 0: a pushover, the tip driven down to this times the length (load_ratio in --json: P L / Mp there); default 0");
+		f["cyclic-drifts"] = {[](P& p, const std::string& t)
+							  {
+								  p.cyclic_drifts.clear();
+								  std::string item;
+								  std::istringstream in(t);
+								  while (std::getline(in, item, ','))
+								  {
+									  double d = 0;
+									  if (!parseNumber(item, d)) return false;
+									  p.cyclic_drifts.push_back(d);
+								  }
+								  return !p.cyclic_drifts.empty();
+							  },
+							  "D1,D2,...  a cyclic pushover: the tip driven through these drifts (of the length, negative up) in order; cyclic_load_ratios in --json"};
 		f["drift-rate"] = numberFlag(&P::drift_rate_per_s, "1/S  the pushover's drift per second, default 0.02");
 		f["settle"] = numberFlag(&P::settle_s, "SECONDS  the pushover holds its drift this long, default 1");
 		f["half-length-support"] = switchFlag(&P::support_joint_half_length, "the support's joint stands for half a segment (elastic stiffness 2 E I / L)");

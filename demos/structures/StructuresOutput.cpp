@@ -77,7 +77,7 @@ std::string toJson(const CantileverParameters& p, const CantileverResult& r)
 	std::vector<std::string> mechanism;
 	for (int i : r.mechanism) mechanism.push_back(i == 0 ? "root" : "inner-" + std::to_string(i));
 	// a pushover's load_ratio is the one it measured at its drift (P L / Mp); otherwise the load ratio it was given
-	j.add("follower", p.follower_load).add("ramp", p.ramp_rate_per_s > 0).add("load_ratio", p.tip_drift > 0 ? r.drift_load_ratio : p.load_ratio).add("tip_drift", p.tip_drift).add("measured_tip_drift", r.measured_tip_drift).add("stress_strain_pairs", long(p.stress_strain ? p.stress_strain->pairs.size() : 0)).add("half_length_support", p.support_joint_half_length).add("plastic_moment_Nm", r.answer.plastic_moment_nm).add("analytic_collapse_load_N", r.answer.collapse_load_n).add("collapse_ratio", r.collapse_ratio).add("collapse_error_pct", 100 * (r.collapse_ratio - r.answer.collapse_ratio) / r.answer.collapse_ratio).add("holds", long(r.holds)).add("mechanism", mechanism).add("analytic_stop_rotation_rad", r.answer.stop_rotation_rad).add("stop_rotation_rad", r.stop_rotation_rad).add("stop_error_pct", 100 * (r.stop_rotation_rad - r.answer.stop_rotation_rad) / r.answer.stop_rotation_rad).add("root_rotation_rad", r.root_rotation_rad).add("max_root_rotation_rad", r.max_root_rotation_rad).add("max_inner_rotation_rad", r.max_inner_rotation_rad).add("creep_rad", r.creep_rad).add("load_work_J", r.load_work_j).add("kinetic_J", r.kinetic_j).add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j).add("energy_balance_error_pct", r.energy_balance_error_pct).add("solver_fallbacks", long(r.solver_fallbacks)).add("steps", r.steps).add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
+	j.add("follower", p.follower_load).add("ramp", p.ramp_rate_per_s > 0).add("load_ratio", p.tip_drift > 0 ? r.drift_load_ratio : p.load_ratio).add("tip_drift", p.tip_drift).add("measured_tip_drift", r.measured_tip_drift).add("cyclic_drifts", p.cyclic_drifts).add("cyclic_load_ratios", r.cyclic_load_ratios).add("cyclic_measured_drifts", r.cyclic_measured_drifts).add("stress_strain_pairs", long(p.stress_strain ? p.stress_strain->pairs.size() : 0)).add("half_length_support", p.support_joint_half_length).add("plastic_moment_Nm", r.answer.plastic_moment_nm).add("analytic_collapse_load_N", r.answer.collapse_load_n).add("collapse_ratio", r.collapse_ratio).add("collapse_error_pct", 100 * (r.collapse_ratio - r.answer.collapse_ratio) / r.answer.collapse_ratio).add("holds", long(r.holds)).add("mechanism", mechanism).add("analytic_stop_rotation_rad", r.answer.stop_rotation_rad).add("stop_rotation_rad", r.stop_rotation_rad).add("stop_error_pct", 100 * (r.stop_rotation_rad - r.answer.stop_rotation_rad) / r.answer.stop_rotation_rad).add("root_rotation_rad", r.root_rotation_rad).add("max_root_rotation_rad", r.max_root_rotation_rad).add("max_inner_rotation_rad", r.max_inner_rotation_rad).add("creep_rad", r.creep_rad).add("load_work_J", r.load_work_j).add("kinetic_J", r.kinetic_j).add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j).add("energy_balance_error_pct", r.energy_balance_error_pct).add("solver_fallbacks", long(r.solver_fallbacks)).add("steps", r.steps).add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
 	return j.str();
 }
 
@@ -105,7 +105,13 @@ std::string toSummary(const CantileverParameters& p, const CantileverResult& r)
 	out << "cantilever, " << plastic::jointMethodName(p.solver.method) << ", " << plastic::solverKindName(p.solver.world.solver) << ", dt " << p.solver.world.internal_step_s << " s, " << p.solver.world.iterations
 		<< " iterations: " << r.steps << " steps (" << r.simulated_s << " s simulated, " << r.solver_fallbacks << " solver fallbacks) in " << r.wall_s << " s\n";
 	out << "  Mp " << r.answer.plastic_moment_nm << " N m, analytic collapse load Mp / L = " << r.answer.collapse_load_n << " N\n";
-	if (p.tip_drift > 0)
+	if (!p.cyclic_drifts.empty())
+	{
+		out << "  cyclic pushover, P L / Mp before each drift:";
+		for (size_t k = 0; k < r.cyclic_load_ratios.size(); k++) out << " " << r.cyclic_load_ratios[k] << " at " << r.cyclic_measured_drifts[k] << ";";
+		out << "\n";
+	}
+	else if (p.tip_drift > 0)
 		out << "  pushover to a tip drift of " << p.tip_drift << " (reached " << r.measured_tip_drift << "): P L / Mp = " << r.drift_load_ratio
 			<< (p.stress_strain ? " (hardening joints, " + std::to_string(p.stress_strain->pairs.size()) + " pairs)" : std::string()) << "\n";
 	else if (p.ramp_rate_per_s > 0)

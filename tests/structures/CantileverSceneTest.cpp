@@ -124,6 +124,37 @@ TEST(CantileverScene, APushoverOfAPlasticHingeLoadsItByMpOverItsLever)
 	}
 }
 
+// A cyclic pushover of the plastic hinge: down to 5 %, up to -5 %, down to 5 % again. Rigid-plastic, the hinge carries
+// +-Mp on every branch: P L / Mp = +-1/cos(theta) before each drift, and the actuator's work is Mp times the hinge's
+// rotation path (asin 0.049 + 2 asin 0.049 + 2 asin 0.049, measured from the hinge's booking, not from the actuator).
+// Bad schedules are named.
+TEST(CantileverScene, ACyclicPushoverOfAPlasticHingeReversesItsLoad)
+{
+	CantileverParameters p;
+	p.cyclic_drifts = {0.05, -0.05, 0.05};
+	const CantileverResult r = runCantilever(p);
+	ASSERT_EQ(r.cyclic_load_ratios.size(), 3u);
+	for (size_t k = 0; k < 3; k++)
+	{
+		const double sign = p.cyclic_drifts[k] > 0 ? 1 : -1;
+		EXPECT_NEAR(r.cyclic_measured_drifts[k], sign * 0.049, 0.0005) << k;
+		EXPECT_NEAR(r.cyclic_load_ratios[k], sign / std::cos(std::asin(r.cyclic_measured_drifts[k])), 0.002) << k;
+	}
+	EXPECT_NEAR(r.load_work_j, r.booked_plastic_work_j + r.kinetic_j, 0.005 * r.load_work_j);
+	const double path = 5 * std::asin(0.05);
+	EXPECT_NEAR(r.booked_plastic_work_j, r.answer.plastic_moment_nm * path, 0.01 * r.booked_plastic_work_j);
+	std::printf("[ info     ] cyclic: %.5f %.5f %.5f; work %.1f J, booked %.1f J (Mp x path %.1f J)\n", r.cyclic_load_ratios[0], r.cyclic_load_ratios[1],
+				r.cyclic_load_ratios[2], r.load_work_j, r.booked_plastic_work_j, r.answer.plastic_moment_nm * path);
+	CantileverParameters bad;
+	bad.cyclic_drifts = {0.05, 0.05};
+	const std::vector<std::string> e = validateCantileverParameters(bad);
+	ASSERT_EQ(e.size(), 1u);
+	EXPECT_NE(e[0].find("cyclic-drifts: drift 2 (0.05) is not in [-1, 1]"), std::string::npos) << e[0];
+	bad.cyclic_drifts = {0.05};
+	bad.tip_drift = 0.05;
+	EXPECT_FALSE(validateCantileverParameters(bad).empty());
+}
+
 TEST(CantileverScene, BadParametersAreNamed)
 {
 	CantileverParameters p;
