@@ -35,7 +35,7 @@ const scene::SliderSpec kIterations = {"solver iterations", 1, 1000, true, 10};
 
 CantileverParameters cantileverFromSliders(const std::vector<float>& v, plastic::JointMethod method)
 {
-	requireCount(v, 8, "cantilever");
+	requireCount(v, 9, "cantilever");
 	CantileverParameters p;
 	p.load_ratio = double(v[0]);
 	p.segments = whole(v[1]);
@@ -43,7 +43,8 @@ CantileverParameters cantileverFromSliders(const std::vector<float>& v, plastic:
 	p.section_depth_m = double(v[3]) * 1e-3;
 	p.yield_stress_pa = double(v[4]) * 1e6;
 	p.follower_load = whole(v[5]) != 0;
-	solverFrom(v, 6, p.solver, method);
+	p.tip_drift = double(v[6]) / 100;
+	solverFrom(v, 7, p.solver, method);
 	return p;
 }
 
@@ -99,6 +100,7 @@ scene::ControlledScene cantileverControls()
 				 {"section depth (mm)", 20, 300, false, 100},
 				 {"yield stress (MPa)", 100, 1000, false, 400},
 				 {"follower load (0/1)", 0, 1, true, 0},
+				 {"pushover tip drift (% of L, 0: the load)", 0, 20, false, 0},
 				 kStep,
 				 kIterations};
 	c.build = [](const std::vector<float>& v, const std::string& m) -> std::unique_ptr<scene::SteppedScene>
