@@ -45,28 +45,31 @@ def curve_file(directory, hardening):
     return path
 
 
-def opensees(hardening, drifts):
-    """OpenSees' load ratios at the drifts, or None (and why) when the peer cannot run."""
+def run_opensees(hardening, flags):
+    """ci/opensees_cantilever.py's JSON for the member at this hardening ratio with these flags, or (None, why)."""
     done = subprocess.run(["bash", os.path.join(PROJECT, "ci/opensees_env.sh"), "python3", os.path.join(PROJECT, "ci/opensees_cantilever.py"),
-                           "--hardening-ratio", repr(hardening), "--drifts", ",".join("%.6f" % d for d in drifts),
-                           "--youngs-modulus-pa", repr(YOUNGS_MODULUS_PA), "--yield-stress-pa", repr(YIELD_STRESS_PA)],
+                           "--hardening-ratio", repr(hardening), "--youngs-modulus-pa", repr(YOUNGS_MODULUS_PA),
+                           "--yield-stress-pa", repr(YIELD_STRESS_PA)] + flags,
                           capture_output=True, text=True)
     if done.returncode != 0:
         return None, (done.stderr.strip().splitlines() or ["exit %d" % done.returncode])[-1]
-    out = json.loads(done.stdout)
+    return json.loads(done.stdout), ""
+
+
+def opensees(hardening, drifts):
+    """OpenSees' load ratios at the drifts, or None (and why) when the peer cannot run."""
+    out, why = run_opensees(hardening, ["--drifts", ",".join("%.6f" % d for d in drifts)])
+    if out is None:
+        return None, why
     return [p["load_ratio"] for p in out["pushover"]], out.get("openseespy_version", "")
 
 
 def opensees_cyclic(hardening, measured):
     """OpenSees' load ratio on each branch of CYCLE at the drift the Bullet run measured before its end (interpolated in
     the branch's steps), or None (and why)."""
-    done = subprocess.run(["bash", os.path.join(PROJECT, "ci/opensees_env.sh"), "python3", os.path.join(PROJECT, "ci/opensees_cantilever.py"),
-                           "--hardening-ratio", repr(hardening), "--cyclic-drifts", ",".join("%g" % d for d in CYCLE),
-                           "--youngs-modulus-pa", repr(YOUNGS_MODULUS_PA), "--yield-stress-pa", repr(YIELD_STRESS_PA)],
-                          capture_output=True, text=True)
-    if done.returncode != 0:
-        return None, (done.stderr.strip().splitlines() or ["exit %d" % done.returncode])[-1]
-    out = json.loads(done.stdout)
+    out, why = run_opensees(hardening, ["--cyclic-drifts", ",".join("%g" % d for d in CYCLE)])
+    if out is None:
+        return None, why
     c = out["cyclic"]
     length = out["inputs"]["length_m"]
     ratios = []
