@@ -116,7 +116,9 @@ struct BentLever
 	}
 	~BentLever()
 	{
+		// the constraints go before the world's destructor, which would remove them after their members are gone
 		w.world.removeConstraint(lock.get());
+		w.world.removeConstraint(joint.get());
 		w.world.removeRigidBody(hand.get());
 	}
 	const btPlasticConstraintState& state() const
