@@ -1,12 +1,11 @@
 // build/bin/charpy: the Charpy impact test, headless, no OpenGL. See --help.
-#include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
 
 #include "CharpyCommandLine.h"
 #include "CharpyRun.h"
+#include "scene/WholeFile.h"
 
 int main(int argc, char** argv)
 {
@@ -46,21 +45,10 @@ int main(int argc, char** argv)
 		if (!cl.historyPath.empty())
 		{
 			// written whole or not at all: to a temporary name, then renamed
-			const std::string temporary = cl.historyPath + ".tmp";
+			std::string error;
+			if (!scene::writeWhole(cl.historyPath, history.str(), error))
 			{
-				std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-				file << history.str();
-				if (!file.flush())
-				{
-					std::cerr << "charpy: --history: cannot write " << temporary << "\n";
-					std::remove(temporary.c_str());
-					return 1;
-				}
-			}
-			if (std::rename(temporary.c_str(), cl.historyPath.c_str()) != 0)
-			{
-				std::cerr << "charpy: --history: cannot rename " << temporary << " to " << cl.historyPath << "\n";
-				std::remove(temporary.c_str());
+				std::cerr << "charpy: --history: " << error << "\n";
 				return 1;
 			}
 		}

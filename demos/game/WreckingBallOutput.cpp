@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 namespace game
@@ -88,28 +87,5 @@ std::string historyRow(double time_s, const WreckingBallResult& r)
 	o << num(time_s) << "," << num(r.gravity_work_j) << "," << num(r.kinetic_j) << "," << num(r.elastic_j) << "," << num(r.plastic_booked_j) << ","
 	  << num(r.plastic_measured_j) << "," << num(r.dissipated_j) << "," << r.yielded_joints << "," << r.broken_joints << "\n";
 	return o.str();
-}
-
-bool writeWhole(const std::string& path, const std::string& text, std::string& error)
-{
-	const std::string tmp = path + ".tmp";
-	{
-		std::ofstream out(tmp, std::ios::binary);
-		out << text;
-		out.close();
-		if (!out)
-		{
-			error = "cannot write " + tmp;
-			std::remove(tmp.c_str());
-			return false;
-		}
-	}
-	if (std::rename(tmp.c_str(), path.c_str()) != 0)
-	{
-		error = "cannot rename " + tmp + " to " + path;
-		std::remove(tmp.c_str());
-		return false;
-	}
-	return true;
 }
 }  // namespace game

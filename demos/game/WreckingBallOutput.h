@@ -12,6 +12,4 @@ std::string toSummary(const WreckingBallParameters& p, const WreckingBallResult&
 std::string jointsCsv(const WreckingBallResult& r);
 std::string historyHeader();
 std::string historyRow(double time_s, const WreckingBallResult& r);
-// writes text to path whole (a temporary file, then renamed); false with a message in error
-bool writeWhole(const std::string& path, const std::string& text, std::string& error);
 }  // namespace game

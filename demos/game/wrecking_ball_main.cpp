@@ -4,6 +4,7 @@
 
 #include "WreckingBallCommandLine.h"
 #include "WreckingBallOutput.h"
+#include "scene/WholeFile.h"
 
 int main(int argc, char** argv)
 {
@@ -30,8 +31,8 @@ int main(int argc, char** argv)
 		}
 		const WreckingBallResult r = scene.result();
 		std::string error;
-		if (!cl.joints_csv.empty() && !writeWhole(cl.joints_csv, jointsCsv(r), error)) throw std::runtime_error(error);
-		if (!cl.history_csv.empty() && !writeWhole(cl.history_csv, history, error)) throw std::runtime_error(error);
+		if (!cl.joints_csv.empty() && !scene::writeWhole(cl.joints_csv, jointsCsv(r), error)) throw std::runtime_error(error);
+		if (!cl.history_csv.empty() && !scene::writeWhole(cl.history_csv, history, error)) throw std::runtime_error(error);
 		std::cout << (cl.json ? toJson(cl.parameters, r) + "\n" : toSummary(cl.parameters, r));
 		return r.finite ? 0 : 3;
 	}

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 
 namespace structures
@@ -217,28 +216,5 @@ std::string hysteresisSvg(const PaperClipParameters& p, const PaperClipResult& r
 	}
 	svg << "\"/>\n</svg>\n";
 	return svg.str();
-}
-
-bool writeWhole(const std::string& path, const std::string& text, std::string* error)
-{
-	const std::string tmp = path + ".tmp";
-	{
-		std::ofstream out(tmp, std::ios::binary);
-		out << text;
-		out.flush();
-		if (!out)
-		{
-			std::remove(tmp.c_str());
-			if (error) *error = "cannot write '" + tmp + "'";
-			return false;
-		}
-	}
-	if (std::rename(tmp.c_str(), path.c_str()) != 0)
-	{
-		std::remove(tmp.c_str());
-		if (error) *error = "cannot rename '" + tmp + "' to '" + path + "'";
-		return false;
-	}
-	return true;
 }
 }  // namespace structures

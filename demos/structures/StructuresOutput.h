@@ -20,6 +20,4 @@ std::string toJson(const PaperClipParameters& p, const PaperClipResult& r);
 std::string toSummary(const PaperClipParameters& p, const PaperClipResult& r);
 // The paper clip's moment-rotation loops as an SVG plot (moment / Mp against rotation, rad)
 std::string hysteresisSvg(const PaperClipParameters& p, const PaperClipResult& r);
-// text written to path whole (a temporary file renamed over it) or not at all; false and *error on failure
-bool writeWhole(const std::string& path, const std::string& text, std::string* error);
 }  // namespace structures

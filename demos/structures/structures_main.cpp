@@ -5,6 +5,7 @@
 
 #include "StructuresCommandLine.h"
 #include "StructuresOutput.h"
+#include "scene/WholeFile.h"
 
 int main(int argc, char** argv)
 {
@@ -41,7 +42,7 @@ int main(int argc, char** argv)
 			if (!cl.hysteresisPath.empty())
 			{
 				std::string error;
-				if (!writeWhole(cl.hysteresisPath, hysteresisSvg(cl.paperClip, r), &error))
+				if (!scene::writeWhole(cl.hysteresisPath, hysteresisSvg(cl.paperClip, r), error))
 				{
 					std::cerr << "structures: --hysteresis: " << error << "\n";
 					return 2;
