@@ -19,7 +19,7 @@ namespace structures
 struct CantileverScene::State
 {
 	explicit State(const CantileverParameters& params)
-		: p(params), start(std::chrono::steady_clock::now()), answer(cantileverAnswer(p)), rig(p.solver), beam(rig.world(), scene::requireValid(beamSpec(p)), &rig.ground()), load(*beam.segments().back(), btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, btScalar(-answer.collapse_load_n), 0), p.follower_load), actuator(*beam.segments().back(), btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, -1, 0)), test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * answer.collapse_ratio, p.collapse_rate_rad_s, p.rate_window_s, p.mechanism_rotation_rad, p.hold_s}), ledger(btVector3(0, 0, 0))
+		: p(params), targets(driftTargets(p)), reach_s(reachTimes(p, targets)), start(std::chrono::steady_clock::now()), answer(cantileverAnswer(p)), rig(p.solver), beam(rig.world(), scene::requireValid(beamSpec(p)), &rig.ground()), load(*beam.segments().back(), btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, btScalar(-answer.collapse_load_n), 0), p.follower_load), actuator(*beam.segments().back(), btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, -1, 0)), test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * answer.collapse_ratio, p.collapse_rate_rad_s, p.rate_window_s, p.mechanism_rotation_rad, p.hold_s}), ledger(btVector3(0, 0, 0))
 	{
 	}
 
@@ -49,43 +49,46 @@ struct CantileverScene::State
 	}
 
 	double jointRotation(size_t j) const { return angles[j + 1].angle_rad() - angles[j].angle_rad(); }
-	// a pushover's targets: tip_drift, or the cyclic drifts in order
-	std::vector<double> driftTargets() const
+	// a pushover's targets: tip_drift, or the cyclic drifts in order (none: a load, not a pushover)
+	static std::vector<double> driftTargets(const CantileverParameters& p)
 	{
 		if (!p.cyclic_drifts.empty()) return p.cyclic_drifts;
 		if (p.tip_drift > 0) return {p.tip_drift};
 		return {};
 	}
-	bool pushover() const { return !driftTargets().empty(); }
-	// the time the target reaches the k-th drift (at the drift rate from the one before, from 0 at first)
-	double pushoverReach_s(size_t k) const
+	// the times the target reaches each drift, at the drift rate from the one before (from 0 at first)
+	static std::vector<double> reachTimes(const CantileverParameters& p, const std::vector<double>& targets)
 	{
-		const std::vector<double> d = driftTargets();
+		std::vector<double> reach;
 		double t = 0, from = 0;
-		for (size_t i = 0; i <= k && i < d.size(); i++)
+		for (double d : targets)
 		{
-			t += std::fabs(d[i] - from) / p.drift_rate_per_s;
-			from = d[i];
+			t += std::fabs(d - from) / p.drift_rate_per_s;
+			reach.push_back(t);
+			from = d;
 		}
-		return t;
+		return reach;
 	}
-	// the target's drift at time t: along the targets at the drift rate, then held at the last one
+	bool pushover() const { return !targets.empty(); }
+	// the target's drift at time t: along the targets at the drift rate, then held at the last one (for one target
+	// min(drift, rate t))
 	double targetDrift(double t) const
 	{
-		const std::vector<double> d = driftTargets();
 		double start = 0, from = 0;
-		for (size_t i = 0; i < d.size(); i++)
+		for (size_t i = 0; i < targets.size(); i++)
 		{
-			const double reach = start + std::fabs(d[i] - from) / p.drift_rate_per_s;
-			if (t < reach) return from + (d[i] > from ? 1 : -1) * p.drift_rate_per_s * (t - start);
-			start = reach;
-			from = d[i];
+			const double travel = p.drift_rate_per_s * (t - start);
+			if (travel < std::fabs(targets[i] - from)) return from + (targets[i] > from ? travel : -travel);
+			start = reach_s[i];
+			from = targets[i];
 		}
 		return from;
 	}
-	double pushoverEnd_s() const { return pushoverReach_s(driftTargets().size() - 1) + p.settle_s; }
+	double pushoverEnd_s() const { return reach_s.back() + p.settle_s; }
 
 	CantileverParameters p;
+	std::vector<double> targets;  // driftTargets(p)
+	std::vector<double> reach_s;  // reachTimes(p, targets)
 	std::chrono::steady_clock::time_point start;
 	CantileverAnswer answer;
 	scene::StructureRig rig;
@@ -122,10 +125,9 @@ CantileverScene::CantileverScene(const CantileverParameters& p) : m(std::make_un
 	for (btRigidBody* b : s.beam.segments()) b->setCollisionFlags(b->getCollisionFlags() | btCollisionObject::CF_NO_CONTACT_RESPONSE);
 	s.ramp = p.ramp_rate_per_s > 0;
 	s.load.setFactor(s.ramp || s.pushover() ? 0.0 : p.load_ratio);
-	const size_t targets = s.driftTargets().size();
-	s.actuatorForceSum_n.assign(targets, 0.0);
-	s.actuatorDriftSum.assign(targets, 0.0);
-	s.actuatorSamples.assign(targets, 0);
+	s.actuatorForceSum_n.assign(s.targets.size(), 0.0);
+	s.actuatorDriftSum.assign(s.targets.size(), 0.0);
+	s.actuatorSamples.assign(s.targets.size(), 0);
 	s.actuator.setFactor(0.0);
 	if (s.pushover())
 	{
@@ -156,8 +158,7 @@ CantileverScene::CantileverScene(const CantileverParameters& p) : m(std::make_un
 		if (state->pushover())
 		{
 			// the actuator's target goes at the drift rate to each drift (down first for a positive one), then stays
-			const double target_m = state->p.cyclic_drifts.empty() ? -state->p.length_m * std::min(state->p.tip_drift, state->p.drift_rate_per_s * state->rig.time_s())
-																	: -state->p.length_m * state->targetDrift(state->rig.time_s());
+			const double target_m = -state->p.length_m * state->targetDrift(state->rig.time_s());
 			const btRigidBody& tip = *state->beam.segments().back();
 			const btVector3 point = state->actuator.point_m();
 			const double velocity = double(tip.getVelocityInLocalPoint(point - tip.getCenterOfMassPosition()).y());
@@ -168,9 +169,9 @@ CantileverScene::CantileverScene(const CantileverParameters& p) : m(std::make_un
 			// measured on the way there, over the last 0.002 of drift (at most 0.1 s) before the target reaches it: a
 			// rigid-plastic hinge held still carries any moment up to its cap, so only a loading branch has a load ratio
 			const double window_s = std::min(0.1, 0.002 / state->p.drift_rate_per_s);
-			for (size_t k = 0; k < state->actuatorSamples.size(); k++)
+			for (size_t k = 0; k < state->reach_s.size(); k++)
 			{
-				const double reach_s = state->pushoverReach_s(k);
+				const double reach_s = state->reach_s[k];
 				if (state->rig.time_s() >= reach_s - window_s && state->rig.time_s() < reach_s)
 				{
 					state->actuatorForceSum_n[k] += force_n;

@@ -21,6 +21,7 @@ struct PaperClipScene::State
 	explicit State(const PaperClipParameters& params)
 		: p((scene::throwIfAny(validatePaperClipParameters(params)), params)),
 		  answer(paperClipAnswer(p)),
+		  spec(paperClipJointSpec(p)),
 		  rig(p.solver),
 		  legShape(btVector3(btScalar(p.leg_length_m / 2), btScalar(p.wire_diameter_m / 2), btScalar(p.wire_diameter_m / 2))),
 		  handShape(btVector3(btScalar(p.wire_diameter_m), btScalar(p.wire_diameter_m), btScalar(p.wire_diameter_m)))
@@ -35,6 +36,7 @@ struct PaperClipScene::State
 
 	PaperClipParameters p;
 	PaperClipAnswer answer;
+	plastic::JointSpec spec;  // the wire's joint
 	scene::StructureRig rig;
 	btCylinderShapeX legShape;
 	btBoxShape handShape;
@@ -73,10 +75,9 @@ PaperClipScene::PaperClipScene(const PaperClipParameters& p) : m(std::make_uniqu
 	s.hand->setActivationState(DISABLE_DEACTIVATION);
 	s.rig.world().addRigidBody(s.hand.get(), 0, 0);
 	s.handInWorld.reset(new scene::BodyInWorld{s.rig.world(), *s.hand});
-	const plastic::JointSpec spec = paperClipJointSpec(p);
-	s.joint = plastic::makeJoint(spec, *s.leg, s.rig.ground());
+	s.joint = plastic::makeJoint(s.spec, *s.leg, s.rig.ground());
 	s.jointInWorld = std::make_unique<scene::ConstraintInWorld>(s.rig.world(), *s.joint.constraint);
-	s.site = scene::jointSite(s.joint, nullptr, *s.leg, spec.pivot_m);
+	s.site = scene::jointSite(s.joint, nullptr, *s.leg, s.spec.pivot_m);
 	// the hand's lock: the leg's rotation is the hand's, its position the joint's (linear DOFs free: lower above upper)
 	const btTransform inHand(btQuaternion::getIdentity(), btVector3(btScalar(p.leg_length_m / 2), 0, 0));
 	s.lock = std::make_unique<btGeneric6DofConstraint>(*s.hand, *s.leg, inHand, btTransform::getIdentity(), true);
@@ -97,7 +98,7 @@ PaperClipScene::PaperClipScene(const PaperClipParameters& p) : m(std::make_uniqu
 	State* state = m.get();
 	s.rig.beforeEachStep([state](double step_s)
 						 {
-		plastic::updateJointForStep(*state->joint.constraint, paperClipJointSpec(state->p), step_s);
+		plastic::updateJointForStep(*state->joint.constraint, state->spec, step_s);
 		state->handMotion->setWorldTransform(btTransform(btQuaternion(btVector3(0, 0, 1), btScalar(state->drivenAngle(state->rig.time_s() + step_s))))); });
 	s.rig.afterEachStep([state]
 						{
