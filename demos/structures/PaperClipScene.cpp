@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "PaperClip.h"
+#include "plastic/EnergyLedger.h"
 #include "scene/Errors.h"
 #include "scene/JointSites.h"
 
@@ -49,6 +50,7 @@ struct PaperClipScene::State
 	std::unique_ptr<scene::BodyInWorld> legInWorld, handInWorld;
 	std::unique_ptr<scene::ConstraintInWorld> jointInWorld, lockInWorld;
 	scene::JointSite site;
+	plastic::EnergyLedger ledger{btVector3(0, 0, 0)};  // the leg's kinetic energy
 	PaperClipResult r;
 	double startKinetic_j = 0;
 	bool finished = false;
@@ -91,7 +93,8 @@ PaperClipScene::PaperClipScene(const PaperClipParameters& p) : m(std::make_uniqu
 	const double spin = 2 * kPi * p.bend_amplitude_rad / p.cycle_period_s;
 	s.leg->setAngularVelocity(btVector3(0, 0, btScalar(spin)));
 	s.leg->setLinearVelocity(btVector3(0, btScalar(spin * p.leg_length_m / 2), 0));
-	s.startKinetic_j = 0.5 * mass_kg * std::pow(spin * p.leg_length_m / 2, 2) + 0.5 * double(inertia.z()) * spin * spin;
+	s.ledger.addBody(*s.leg);
+	s.startKinetic_j = s.ledger.measure().kinetic_j;
 	s.r.answer = s.answer;
 	s.r.break_time_s = std::numeric_limits<double>::quiet_NaN();
 	s.r.cycles_to_break = std::numeric_limits<double>::quiet_NaN();
@@ -145,9 +148,7 @@ PaperClipResult PaperClipScene::result() const
 	r.plastic_work_j = s.joint.plasticWork_j();
 	r.elastic_j = s.joint.elasticEnergy_j();
 	r.start_kinetic_j = s.startKinetic_j;
-	const btVector3 v = s.leg->getLinearVelocity(), w = s.leg->getAngularVelocity();
-	const btVector3 I = s.leg->getLocalInertia();
-	r.kinetic_j = 0.5 / double(s.leg->getInvMass()) * double(v.length2()) + 0.5 * double(I.z()) * double(w.z() * w.z());
+	r.kinetic_j = s.ledger.measure().kinetic_j;
 	r.energy_balance_error_pct =
 		r.hand_work_j > 0 ? 100 * (r.hand_work_j - r.plastic_work_j - r.elastic_j - (r.kinetic_j - r.start_kinetic_j)) / r.hand_work_j : 0.0;
 	r.steps = s.rig.steps();
