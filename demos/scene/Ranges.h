@@ -12,4 +12,6 @@ void requireRange(std::vector<std::string>& errors, const char* name, double val
 // the same for a range open at its low end, (low, high]
 void requireRangeAbove(std::vector<std::string>& errors, const char* name, double value, double low, double high, const char* unit);
 void requireWhole(std::vector<std::string>& errors, const char* name, int value, int low, int high);
+// a pushover's drifts in order: 1 to 100 of them, each in [-limit, limit] and not the one before it (the first not 0)
+void requireDrifts(std::vector<std::string>& errors, const char* name, const std::vector<double>& drifts, double limit, const char* of);
 }  // namespace scene

@@ -35,19 +35,7 @@ std::vector<std::string> validateCantileverParameters(const CantileverParameters
 	{
 		if (p.tip_drift > 0) e.push_back("cyclic-drifts and tip-drift: a cyclic pushover's last drift is its own (one or the other)");
 		if (p.ramp_rate_per_s > 0 || p.follower_load) e.push_back("cyclic-drifts: a pushover drives the tip along y, with no ramp and no follower load");
-		if (p.cyclic_drifts.size() > 100) e.push_back("cyclic-drifts: " + std::to_string(p.cyclic_drifts.size()) + " drifts is not in [1, 100]");
-		double from = 0;
-		for (size_t i = 0; i < p.cyclic_drifts.size(); i++)
-		{
-			const double d = p.cyclic_drifts[i];
-			if (!(std::fabs(d) <= 1) || d == from)
-			{
-				std::ostringstream out;
-				out << "cyclic-drifts: drift " << i + 1 << " (" << d << ") is not in [-1, 1] (of the length) or is the drift before it";
-				e.push_back(out.str());
-			}
-			from = d;
-		}
+		scene::requireDrifts(e, "cyclic-drifts", p.cyclic_drifts, 1, "(of the length)");
 	}
 	if (p.stress_strain)
 	{

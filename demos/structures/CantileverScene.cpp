@@ -12,6 +12,7 @@
 #include "plastic/EnergyLedger.h"
 #include "scene/JointSites.h"
 #include "scene/Measures.h"
+#include "scene/DriftActuator.h"
 #include "scene/Errors.h"
 
 namespace structures
@@ -19,7 +20,16 @@ namespace structures
 struct CantileverScene::State
 {
 	explicit State(const CantileverParameters& params)
-		: p(params), targets(driftTargets(p)), reach_s(reachTimes(p, targets)), start(std::chrono::steady_clock::now()), answer(cantileverAnswer(p)), rig(p.solver), beam(rig.world(), scene::requireValid(beamSpec(p)), &rig.ground()), load(*beam.segments().back(), btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, btScalar(-answer.collapse_load_n), 0), p.follower_load), actuator(*beam.segments().back(), btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)), btVector3(0, -1, 0)), test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * answer.collapse_ratio, p.collapse_rate_rad_s, p.rate_window_s, p.mechanism_rotation_rad, p.hold_s}), ledger(btVector3(0, 0, 0))
+		: p(params),
+		  start(std::chrono::steady_clock::now()),
+		  answer(cantileverAnswer(p)),
+		  rig(p.solver),
+		  beam(rig.world(), scene::requireValid(beamSpec(p)), &rig.ground()),
+		  load(*beam.segments().back(), tipPoint(beam), btVector3(0, btScalar(-answer.collapse_load_n), 0), p.follower_load),
+		  actuator(*beam.segments().back(), tipPoint(beam), btVector3(0, -1, 0), btVector3(btScalar(p.length_m), 0, 0), driftPath(p), actuatorStiffness(p, beam),
+				   2.0 * std::sqrt(actuatorStiffness(p, beam) * tipMass_kg(beam))),
+		  test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * answer.collapse_ratio, p.collapse_rate_rad_s, p.rate_window_s, p.mechanism_rotation_rad, p.hold_s}),
+		  ledger(btVector3(0, 0, 0))
 	{
 	}
 
@@ -49,61 +59,41 @@ struct CantileverScene::State
 	}
 
 	double jointRotation(size_t j) const { return angles[j + 1].angle_rad() - angles[j].angle_rad(); }
-	// a pushover's targets: tip_drift, or the cyclic drifts in order (none: a load, not a pushover)
-	static std::vector<double> driftTargets(const CantileverParameters& p)
+	// the segment's local z is the member axis: the tip is half a segment out
+	static btVector3 tipPoint(const plastic::Beam& beam) { return btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)); }
+	static double tipMass_kg(const plastic::Beam& beam) { return 1.0 / double(beam.segments().back()->getInvMass()); }
+	// a pushover's path: to tip_drift, or through the cyclic drifts in order (none: a load, not a pushover)
+	static scene::DriftPath driftPath(const CantileverParameters& p)
 	{
-		if (!p.cyclic_drifts.empty()) return p.cyclic_drifts;
-		if (p.tip_drift > 0) return {p.tip_drift};
-		return {};
+		scene::DriftPath path;
+		if (!p.cyclic_drifts.empty())
+			path.drifts = p.cyclic_drifts;
+		else if (p.tip_drift > 0)
+			path.drifts = {p.tip_drift};
+		path.length_m = p.length_m;
+		path.rate_per_s = p.drift_rate_per_s;
+		return path;
 	}
-	// the times the target reaches each drift, at the drift rate from the one before (from 0 at first)
-	static std::vector<double> reachTimes(const CantileverParameters& p, const std::vector<double>& targets)
+	// a stiff spring on the tip (100 times the member's elastic tip stiffness 3 E I / L^3), soft enough to be stable
+	// with the tip segment's mass at the step, critically damped; its integral action takes away the spring's lag, so
+	// that the tip reaches its drift also when the spring is soft
+	static double actuatorStiffness(const CantileverParameters& p, const plastic::Beam& beam)
 	{
-		std::vector<double> reach;
-		double t = 0, from = 0;
-		for (double d : targets)
-		{
-			t += std::fabs(d - from) / p.drift_rate_per_s;
-			reach.push_back(t);
-			from = d;
-		}
-		return reach;
+		const plastic::BeamSpec spec = beamSpec(p);
+		const double EI = spec.joint.material.youngs_modulus_pa * spec.joint.section.second_moment_y_m4;
+		return scene::DriftActuator::stableStiffness_n_m(3.0 * EI / std::pow(p.length_m, 3), tipMass_kg(beam), p.solver.world.internal_step_s);
 	}
-	bool pushover() const { return !targets.empty(); }
-	// the target's drift at time t: along the targets at the drift rate, then held at the last one (for one target
-	// min(drift, rate t))
-	double targetDrift(double t) const
-	{
-		double start = 0, from = 0;
-		for (size_t i = 0; i < targets.size(); i++)
-		{
-			const double travel = p.drift_rate_per_s * (t - start);
-			if (travel < std::fabs(targets[i] - from)) return from + (targets[i] > from ? travel : -travel);
-			start = reach_s[i];
-			from = targets[i];
-		}
-		return from;
-	}
-	double pushoverEnd_s() const { return reach_s.back() + p.settle_s; }
+	bool pushover() const { return actuator.active(); }
+	double pushoverEnd_s() const { return actuator.end_s() + p.settle_s; }
 
 	CantileverParameters p;
-	std::vector<double> targets;  // driftTargets(p)
-	std::vector<double> reach_s;  // reachTimes(p, targets)
 	std::chrono::steady_clock::time_point start;
 	CantileverAnswer answer;
 	scene::StructureRig rig;
 	plastic::Beam beam;
-	// the segment's local z is the member axis: the tip is half a segment out
 	plastic::PointLoad load;
-	// the pushover's actuator: its factor is its force (N) down along y
-	plastic::PointLoad actuator;
-	double actuatorStiffness_n_m = 0;
-	double actuatorDamping_n_s_m = 0;
-	double actuatorIntegral_n = 0;  // the integral action: what the spring's lag leaves, driven to zero at 5 rad/s
-	// over the window before each target is reached
-	std::vector<double> actuatorForceSum_n;
-	std::vector<double> actuatorDriftSum;
-	std::vector<int> actuatorSamples;
+	// the pushover's: its force down along y
+	scene::DriftActuator actuator;
 	CollapseTest test;
 	std::vector<scene::PlanarAngle> angles;  // the ground, then each segment
 	plastic::EnergyLedger ledger;
@@ -125,22 +115,6 @@ CantileverScene::CantileverScene(const CantileverParameters& p) : m(std::make_un
 	for (btRigidBody* b : s.beam.segments()) b->setCollisionFlags(b->getCollisionFlags() | btCollisionObject::CF_NO_CONTACT_RESPONSE);
 	s.ramp = p.ramp_rate_per_s > 0;
 	s.load.setFactor(s.ramp || s.pushover() ? 0.0 : p.load_ratio);
-	s.actuatorForceSum_n.assign(s.targets.size(), 0.0);
-	s.actuatorDriftSum.assign(s.targets.size(), 0.0);
-	s.actuatorSamples.assign(s.targets.size(), 0);
-	s.actuator.setFactor(0.0);
-	if (s.pushover())
-	{
-		// a stiff spring on the tip (100 times the member's elastic tip stiffness 3 E I / L^3), soft enough to be stable
-		// with the tip segment's mass at the step (k dt^2 / m <= 1/4), critically damped, with an integral action (5 rad/s)
-		// that takes away the spring's lag, so that the tip reaches its drift also when the spring is soft
-		const plastic::BeamSpec spec = State::beamSpec(p);
-		const double EI = spec.joint.material.youngs_modulus_pa * spec.joint.section.second_moment_y_m4;
-		const double tipMass_kg = 1.0 / double(s.beam.segments().back()->getInvMass());
-		const double dt = p.solver.world.internal_step_s;
-		s.actuatorStiffness_n_m = std::min(100.0 * 3.0 * EI / std::pow(p.length_m, 3), 0.25 * tipMass_kg / (dt * dt));
-		s.actuatorDamping_n_s_m = 2.0 * std::sqrt(s.actuatorStiffness_n_m * tipMass_kg);
-	}
 	s.angles.emplace_back(nullptr);
 	for (btRigidBody* b : s.beam.segments()) s.angles.emplace_back(b);
 	for (btRigidBody* b : s.beam.segments()) s.ledger.addBody(*b);
@@ -155,32 +129,7 @@ CantileverScene::CantileverScene(const CantileverParameters& p) : m(std::make_un
 			state->load.setFactor(state->test.factor());
 		}
 		state->load.apply();
-		if (state->pushover())
-		{
-			// the actuator's target goes at the drift rate to each drift (down first for a positive one), then stays
-			const double target_m = -state->p.length_m * state->targetDrift(state->rig.time_s());
-			const btRigidBody& tip = *state->beam.segments().back();
-			const btVector3 point = state->actuator.point_m();
-			const double velocity = double(tip.getVelocityInLocalPoint(point - tip.getCenterOfMassPosition()).y());
-			const double error_m = double(point.y()) - target_m;
-			state->actuatorIntegral_n += 5.0 * step_s * state->actuatorStiffness_n_m * error_m;
-			const double force_n = state->actuatorStiffness_n_m * error_m + state->actuatorDamping_n_s_m * velocity + state->actuatorIntegral_n;
-			state->actuator.setFactor(force_n);
-			// measured on the way there, over the last 0.002 of drift (at most 0.1 s) before the target reaches it: a
-			// rigid-plastic hinge held still carries any moment up to its cap, so only a loading branch has a load ratio
-			const double window_s = std::min(0.1, 0.002 / state->p.drift_rate_per_s);
-			for (size_t k = 0; k < state->reach_s.size(); k++)
-			{
-				const double reach_s = state->reach_s[k];
-				if (state->rig.time_s() >= reach_s - window_s && state->rig.time_s() < reach_s)
-				{
-					state->actuatorForceSum_n[k] += force_n;
-					state->actuatorDriftSum[k] += -double(point.y()) / state->p.length_m;
-					state->actuatorSamples[k]++;
-				}
-			}
-		}
-		state->actuator.apply();
+		state->actuator.beforeStep(state->rig.time_s(), step_s);
 		state->beam.updateForStep(step_s); });
 	s.rig.afterEachStep([state]
 						{
@@ -257,12 +206,8 @@ CantileverResult CantileverScene::result() const
 	r.root_rotation_rad = -s.jointRotation(0);
 	for (size_t j = 0; j < s.atThird.size(); j++) r.creep_rad = std::max(r.creep_rad, std::fabs(s.jointRotation(j) - s.atThird[j]));
 	r.load_work_j = s.load.work_j() + s.actuator.work_j();
-	for (size_t k = 0; k < s.actuatorSamples.size(); k++)
-	{
-		const int n = s.actuatorSamples[k];
-		r.cyclic_measured_drifts.push_back(n ? s.actuatorDriftSum[k] / n : 0.0);
-		r.cyclic_load_ratios.push_back(n ? s.actuatorForceSum_n[k] / n * s.p.length_m / s.answer.plastic_moment_nm : 0.0);
-	}
+	r.cyclic_measured_drifts = s.actuator.meanDrifts();
+	for (double force_n : s.actuator.meanForces_n()) r.cyclic_load_ratios.push_back(force_n * s.p.length_m / s.answer.plastic_moment_nm);
 	// the last target's
 	r.measured_tip_drift = r.cyclic_measured_drifts.empty() ? 0.0 : r.cyclic_measured_drifts.back();
 	r.drift_load_ratio = r.cyclic_load_ratios.empty() ? 0.0 : r.cyclic_load_ratios.back();
