@@ -42,6 +42,17 @@ struct PortalParameters
 	double mechanism_rotation_rad = 0.05;
 	double hold_s = 2.0;       // a held load that has not turned the mechanism that far by then is raised again
 	double duration_s = 60.0;  // at most
+	// gravity: a dead load down at each knee (N), raised from 0 over knee_load_ramp_s and then held (with the ramp,
+	// the load factor starts rising then); its work P times the knees' descent is the P-delta effect of a sway
+	double knee_load_n = 0;
+	double knee_load_ramp_s = 1.0;
+	// not empty: a sway pushover instead of H and V: an actuator (a stiff spring and damper along x on the left knee,
+	// with integral action) drives the knee through these drifts (of h, in order) at drift_rate_per_s once the knee
+	// loads are on, then holds the last settle_s; sway_load_ratios in the result are its force H h / (4 Mp) over the
+	// last 0.002 of drift before each is reached (a loading branch)
+	std::vector<double> sway_drifts;
+	double drift_rate_per_s = 0.02;
+	double settle_s = 1.0;
 };
 
 // The frame's joints in order along it: base-left, the left column's inner joints, knee-left, the beam's inner
@@ -66,6 +77,12 @@ struct PortalAnswer
 	std::vector<int> mechanism_sites;         // the sites that rotate in it
 };
 
+// The sway mechanism of a rigid-plastic frame turned so far that the knees have moved by drift x h along x: with the
+// knee loads P (2 knee_load_n in all) its equilibrium H h cos(theta) + P h sin(theta) = 4 Mp (the four hinges at Mp,
+// h sin(theta) = drift h) gives H h / (4 Mp) = (1 - P h drift / (4 Mp)) / sqrt(1 - drift^2); without P it is the
+// lever's 1 / cos(theta), and a first-order analysis says 1 at every drift.
+double swaySecondOrderRatio(const PortalParameters& p, double drift);
+
 struct PortalResult
 {
 	PortalAnswer answer;
@@ -81,6 +98,9 @@ struct PortalResult
 	double kinetic_j = 0;
 	double booked_plastic_work_j = 0;
 	double geometric_plastic_work_j = 0;  // Mp x sum |site rotation| from the bodies
+	std::vector<double> sway_load_ratios;        // sway pushover: H h / (4 Mp) before each of sway_drifts
+	std::vector<double> sway_measured_drifts;    // and the left knee's drift then
+	std::vector<double> second_order_load_ratios;  // swaySecondOrderRatio at each measured drift
 	int holds = 0;                        // ramp: how many times the load was held (more than one: softening or vibration was not a collapse)
 	int solver_fallbacks = 0;             // internal steps in which btMLCPSolver fell back to sequential impulse
 	long steps = 0;

@@ -25,7 +25,7 @@ std::vector<std::string> validatePortalParameters(const PortalParameters& p)
 	scene::requireRange(e, "density", p.density_kg_m3, 1, 1e5, "kg/m3");
 	scene::requireRange(e, "horizontal-load", p.horizontal_load_n, 0, 1e12, "N");
 	scene::requireRange(e, "vertical-load", p.vertical_load_n, 0, 1e12, "N");
-	if (e.empty() && p.horizontal_load_n + p.vertical_load_n <= 0) e.push_back("horizontal-load, vertical-load: one of them must be > 0 N");
+	if (e.empty() && p.sway_drifts.empty() && p.horizontal_load_n + p.vertical_load_n <= 0) e.push_back("horizontal-load, vertical-load: one of them must be > 0 N");
 	scene::requireRange(e, "ramp-rate", p.ramp_rate_per_s, 0, 100, "1/s (0 = constant --load-factor)");
 	scene::requireRange(e, "load-factor", p.load_factor, 0, 1000, "");
 	scene::requireRange(e, "fast-ramp-rate", p.fast_ramp_rate_per_s, 1e-6, 1000, "1/s");
@@ -35,8 +35,19 @@ std::vector<std::string> validatePortalParameters(const PortalParameters& p)
 	scene::requireRange(e, "mechanism-rotation", p.mechanism_rotation_rad, 1e-4, 3, "rad");
 	scene::requireRange(e, "hold", p.hold_s, 1e-3, 100, "s");
 	scene::requireRange(e, "duration", p.duration_s, 1e-3, 10000, "s");
+	scene::requireRange(e, "knee-load", p.knee_load_n, 0, 1e12, "N");
+	scene::requireRange(e, "knee-load-ramp", p.knee_load_ramp_s, 1e-3, 100, "s");
+	scene::requireDrifts(e, "sway-drifts", p.sway_drifts, 0.5, "(of h)");
+	scene::requireRange(e, "drift-rate", p.drift_rate_per_s, 1e-6, 10, "1/s");
+	scene::requireRange(e, "settle", p.settle_s, 0, 100, "s");
 	if (e.empty() && p.duration_s / p.solver.world.internal_step_s > 1e8) e.push_back("duration / dt: more than 1e8 steps");
 	return e;
+}
+
+double swaySecondOrderRatio(const PortalParameters& p, double drift)
+{
+	const double mp = portalAnswer(p).plastic_moment_nm;
+	return (1 - 2 * p.knee_load_n * p.height_m * drift / (4 * mp)) / std::sqrt(1 - drift * drift);
 }
 
 PortalAnswer portalAnswer(const PortalParameters& p)

@@ -14,6 +14,7 @@
 #include "scene/JointSites.h"
 #include "scene/Measures.h"
 #include "Portal.h"
+#include "scene/DriftActuator.h"
 #include "scene/Errors.h"
 
 namespace structures
@@ -60,6 +61,10 @@ struct PortalScene::State
 					 btVector3(btScalar(p.horizontal_load_n), 0, 0), false),
 		  vertical(*beam.segments()[size_t(p.beam_segments / 2 - 1)], btVector3(0, 0, btScalar(beam.segmentLength_m() / 2)),
 				   btVector3(0, btScalar(-p.vertical_load_n), 0), false),
+		  kneeLeft(*columnLeft.segments().back(), btVector3(0, 0, btScalar(columnLeft.segmentLength_m() / 2)), btVector3(0, btScalar(-p.knee_load_n), 0), false),
+		  kneeRight(*columnRight.segments().front(), btVector3(0, 0, btScalar(-columnRight.segmentLength_m() / 2)), btVector3(0, btScalar(-p.knee_load_n), 0), false),
+		  actuator(*columnLeft.segments().back(), btVector3(0, 0, btScalar(columnLeft.segmentLength_m() / 2)), btVector3(1, 0, 0), btVector3(0, h, 0), swayPath(p),
+				   actuatorStiffness(p, columnLeft), 2.0 * std::sqrt(actuatorStiffness(p, columnLeft) * kneeMass_kg(columnLeft))),
 		  test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * answer.collapse_factor, p.collapse_rate_rad_s, p.rate_window_s,
 				p.mechanism_rotation_rad, p.hold_s}),
 		  ledger(btVector3(0, 0, 0))
@@ -72,6 +77,28 @@ struct PortalScene::State
 		s.pivot_m = btVector3(L, 0, 0);
 		return s;
 	}
+
+	// the sway pushover's path: from 0 once the knee loads are on
+	static scene::DriftPath swayPath(const PortalParameters& p)
+	{
+		scene::DriftPath path;
+		path.drifts = p.sway_drifts;
+		path.length_m = p.height_m;
+		path.rate_per_s = p.drift_rate_per_s;
+		path.start_s = p.knee_load_ramp_s;
+		return path;
+	}
+	static double kneeMass_kg(const plastic::Beam& columnLeft) { return 1.0 / double(columnLeft.segments().back()->getInvMass()); }
+	// 100 times the sway stiffness of two fixed-base columns under a rigid beam (24 E I / h^3, more than the frame's),
+	// as far as it is stable with the knee segment's mass at the step
+	static double actuatorStiffness(const PortalParameters& p, const plastic::Beam& columnLeft)
+	{
+		const double EI = p.youngs_modulus_pa * plastic::rectangle(p.section_width_m, p.section_depth_m).second_moment_y_m4;
+		return scene::DriftActuator::stableStiffness_n_m(24.0 * EI / std::pow(p.height_m, 3), kneeMass_kg(columnLeft), p.solver.world.internal_step_s);
+	}
+	bool pushover() const { return actuator.active(); }
+	// the knee loads' factor at time t: raised from 0 to 1 over knee_load_ramp_s
+	double kneeFactor(double t) const { return std::min(1.0, t / p.knee_load_ramp_s); }
 
 	std::vector<double> rotations() const
 	{
@@ -90,6 +117,8 @@ struct PortalScene::State
 	plastic::Joint base;
 	scene::ConstraintInWorld baseInWorld;
 	plastic::PointLoad horizontal, vertical;
+	plastic::PointLoad kneeLeft, kneeRight;  // gravity
+	scene::DriftActuator actuator;           // the sway pushover's, at the left knee along x
 	CollapseTest test;
 	plastic::EnergyLedger ledger;
 	std::vector<const btRigidBody*> path;  // the bodies in order along the frame, the ground at both ends
@@ -133,30 +162,44 @@ PortalScene::PortalScene(const PortalParameters& p) : m(std::make_unique<State>(
 		s.sites.push_back(scene::jointSite(*s.joints[i], a, *b, pivots[i]));
 	}
 	for (size_t i = 1; i + 1 < s.path.size(); i++) s.ledger.addBody(*s.path[i]);
-	s.ramp = p.ramp_rate_per_s > 0;
+	s.ramp = p.ramp_rate_per_s > 0 && !s.pushover();
 	State* state = m.get();
 	s.rig.beforeEachStep([state](double step_s)
 						 {
-		if (state->ramp) state->test.advance(step_s);
+		const double t = state->rig.time_s();
+		// with knee loads the load factor rises once they are on
+		if (state->ramp && (state->p.knee_load_n == 0 || t >= state->p.knee_load_ramp_s)) state->test.advance(step_s);
 		for (plastic::PointLoad* load : {&state->horizontal, &state->vertical})
 		{
-			load->setFactor(state->ramp ? state->test.factor() : state->p.load_factor);
+			load->setFactor(state->pushover() ? 0.0 : state->ramp ? state->test.factor()
+																  : state->p.load_factor);
 			load->apply();
 		}
+		if (state->p.knee_load_n > 0)
+			for (plastic::PointLoad* load : {&state->kneeLeft, &state->kneeRight})
+			{
+				load->setFactor(state->kneeFactor(t));
+				load->apply();
+			}
+		state->actuator.beforeStep(t, step_s);
 		state->columnLeft.updateForStep(step_s);
 		state->beam.updateForStep(step_s);
 		state->columnRight.updateForStep(step_s);
 		plastic::updateJointForStep(*state->base.constraint, state->baseSpec, step_s); });
 	s.rig.afterEachStep([state]
 						{
-		state->horizontal.afterStep();
-		state->vertical.afterStep();
+		for (plastic::PointLoad* load : {&state->horizontal, &state->vertical, &state->kneeLeft, &state->kneeRight}) load->afterStep();
+		state->actuator.afterStep();
 		for (scene::PlanarAngle& a : state->angles) a.update(); });
 }
 
 PortalScene::~PortalScene() = default;
 
-bool PortalScene::done() const { return m->finished || m->rig.time_s() >= m->p.duration_s - 1e-12; }
+bool PortalScene::done() const
+{
+	const double end_s = m->pushover() ? std::min(m->p.duration_s, m->actuator.end_s() + m->p.settle_s) : m->p.duration_s;
+	return m->finished || m->rig.time_s() >= end_s - 1e-12;
+}
 double PortalScene::time_s() const { return m->rig.time_s(); }
 btDiscreteDynamicsWorld& PortalScene::world() { return m->rig.world(); }
 
@@ -196,7 +239,13 @@ PortalResult PortalScene::result() const
 	r.mechanism_sites = s.test.mechanism(r.rotations_rad);
 	r.mechanism_matches = s.test.done() && r.mechanism_sites == r.answer.mechanism_sites;
 	r.collapse_error_pct = 100.0 * (r.collapse_factor - r.answer.collapse_factor) / r.answer.collapse_factor;
-	r.load_work_j = s.horizontal.work_j() + s.vertical.work_j();
+	r.load_work_j = s.horizontal.work_j() + s.vertical.work_j() + s.kneeLeft.work_j() + s.kneeRight.work_j() + s.actuator.work_j();
+	if (s.pushover())
+	{
+		r.sway_measured_drifts = s.actuator.meanDrifts();
+		for (double force_n : s.actuator.meanForces_n()) r.sway_load_ratios.push_back(force_n * s.p.height_m / (4 * mp));
+		for (double d : r.sway_measured_drifts) r.second_order_load_ratios.push_back(swaySecondOrderRatio(s.p, d));
+	}
 	r.kinetic_j = s.ledger.measure().kinetic_j;
 	for (const plastic::Joint* j : s.joints) r.booked_plastic_work_j += j->plasticWork_j();
 	for (double x : r.rotations_rad) r.geometric_plastic_work_j += mp * std::fabs(x);
@@ -231,6 +280,14 @@ scene::SceneLedger PortalScene::ledger() const
 	l.answer.push_back(line);
 	std::snprintf(line, sizeof line, "collapse factor %.3f (%s)", a.collapse_factor, a.mechanism.c_str());
 	l.answer.push_back(line);
+	if (m->pushover())
+	{
+		std::snprintf(line, sizeof line, "sway drift %.4f, H h / 4 Mp %.3f", m->actuator.drift(), m->actuator.force_n() * m->p.height_m / (4 * a.plastic_moment_nm));
+		l.status.push_back(line);
+		std::snprintf(line, sizeof line, "rigid-plastic, second order: %.3f", swaySecondOrderRatio(m->p, m->actuator.drift()));
+		l.answer.push_back(line);
+		return l;
+	}
 	std::snprintf(line, sizeof line, "load factor %.3f", m->test.factor());
 	l.status.push_back(line);
 	if (std::isfinite(r.collapse_factor))
@@ -252,7 +309,8 @@ scene::WorldBox PortalScene::viewEnvelope() const
 	// The frame (columns 0..h at x = 0 and L, the beam at h) and its mechanism: the columns sway and the beam sags by
 	// turns of a few mechanism rotations (the run holds the load once the collapse is seen and stops soon after).
 	const PortalParameters& p = m->p;
-	const double turn_rad = std::max(0.2, 4 * p.mechanism_rotation_rad);
+	double turn_rad = std::max(0.2, 4 * p.mechanism_rotation_rad);
+	for (double d : p.sway_drifts) turn_rad = std::max(turn_rad, std::fabs(d) + 0.05);
 	const double pad_m = p.section_depth_m;
 	scene::WorldBox box;
 	box.min_m = btVector3(btScalar(-turn_rad * p.height_m - pad_m), btScalar(-pad_m), btScalar(-p.section_width_m));

@@ -50,14 +50,16 @@ CantileverParameters cantileverFromSliders(const std::vector<float>& v, plastic:
 
 PortalParameters portalFromSliders(const std::vector<float>& v, plastic::JointMethod method)
 {
-	requireCount(v, 7, "portal");
+	requireCount(v, 9, "portal");
 	PortalParameters p;
 	p.horizontal_load_n = double(v[0]) * 1e3;
 	p.vertical_load_n = double(v[1]) * 1e3;
 	p.span_m = double(v[2]);
 	p.height_m = double(v[3]);
 	p.ramp_rate_per_s = double(v[4]);
-	solverFrom(v, 5, p.solver, method);
+	p.knee_load_n = double(v[5]) * 1e3;
+	if (v[6] > 0) p.sway_drifts = {double(v[6]) / 100};
+	solverFrom(v, 7, p.solver, method);
 	return p;
 }
 
@@ -125,6 +127,8 @@ scene::ControlledScene portalControls()
 				 {"span (m)", 1, 10, false, 4},
 				 {"height (m)", 1, 10, false, 3},
 				 {"load factor ramp (1/s)", 0.005f, 0.2f, false, 0.02f},
+				 {"gravity on each knee (kN)", 0, 300, false, 0},
+				 {"sway pushover drift (% of h, 0: the loads)", 0, 30, false, 0},
 				 kStep,
 				 kIterations};
 	c.build = [](const std::vector<float>& v, const std::string& m) -> std::unique_ptr<scene::SteppedScene>

@@ -67,6 +67,27 @@ Flags<P> commonFlags()
 	return f;
 }
 
+// a comma-separated list of drifts (at least one)
+template <class P>
+scene::Flag<P> driftListFlag(std::vector<double> P::*member, const char* help)
+{
+	return {[member](P& p, const std::string& t)
+			{
+				std::vector<double>& drifts = p.*member;
+				drifts.clear();
+				std::string item;
+				std::istringstream in(t);
+				while (std::getline(in, item, ','))
+				{
+					double d = 0;
+					if (!parseNumber(item, d)) return false;
+					drifts.push_back(d);
+				}
+				return !drifts.empty();
+			},
+			help};
+}
+
 template <class P>
 void addRampFlags(Flags<P>& f, const char* rateHelp)
 {
@@ -91,20 +112,7 @@ const Flags<CantileverParameters>& cantileverFlags()
 		f["load-ratio"] = numberFlag(&P::load_ratio, "P_L_OVER_MP  constant tip load, default 1.5");
 		f["follower"] = switchFlag(&P::follower_load, "the load turns with the tip (default: dead load along -y)");
 		f["tip-drift"] = numberFlag(&P::tip_drift, "FRACTION  > 0: a pushover, the tip driven down to this times the length (load_ratio in --json: P L / Mp there); default 0");
-		f["cyclic-drifts"] = {[](P& p, const std::string& t)
-							  {
-								  p.cyclic_drifts.clear();
-								  std::string item;
-								  std::istringstream in(t);
-								  while (std::getline(in, item, ','))
-								  {
-									  double d = 0;
-									  if (!parseNumber(item, d)) return false;
-									  p.cyclic_drifts.push_back(d);
-								  }
-								  return !p.cyclic_drifts.empty();
-							  },
-							  "D1,D2,...  a cyclic pushover: the tip driven through these drifts (of the length, negative up) in order; cyclic_load_ratios in --json"};
+		f["cyclic-drifts"] = driftListFlag(&P::cyclic_drifts, "D1,D2,...  a cyclic pushover: the tip driven through these drifts (of the length, negative up) in order; cyclic_load_ratios in --json");
 		f["drift-rate"] = numberFlag(&P::drift_rate_per_s, "1/S  the pushover's drift per second, default 0.02");
 		f["settle"] = numberFlag(&P::settle_s, "SECONDS  the pushover holds its drift this long, default 1");
 		f["half-length-support"] = switchFlag(&P::support_joint_half_length, "the support's joint stands for half a segment (elastic stiffness 2 E I / L)");
@@ -130,6 +138,11 @@ const Flags<PortalParameters>& portalFlags()
 		f["beam-segments"] = wholeFlag(&P::beam_segments, "N  even, default 2");
 		f["horizontal-load"] = numberFlag(&P::horizontal_load_n, "N  H at the left knee at load factor 1, default 50e3");
 		f["vertical-load"] = numberFlag(&P::vertical_load_n, "N  V at mid-span at load factor 1, default 75e3");
+		f["knee-load"] = numberFlag(&P::knee_load_n, "N  gravity: a dead load down at each knee, raised over --knee-load-ramp, then held; default 0");
+		f["knee-load-ramp"] = numberFlag(&P::knee_load_ramp_s, "SECONDS  default 1");
+		f["sway-drifts"] = driftListFlag(&P::sway_drifts, "D1,D2,...  a sway pushover instead of H and V: the left knee driven along x through these drifts (of h) once the knee loads are on; sway_load_ratios (H h / 4 Mp) in --json");
+		f["drift-rate"] = numberFlag(&P::drift_rate_per_s, "1/S  the sway pushover's drift per second, default 0.02");
+		f["settle"] = numberFlag(&P::settle_s, "SECONDS  the sway pushover holds its last drift this long, default 1");
 		return f;
 	}();
 	return flags;
@@ -259,7 +272,9 @@ std::string structuresUsage()
 		   "P L sin(theta) = Mp theta)\n" +
 		   scene::usageOf(cantileverFlags()) +
 		   "--scene=portal: a fixed-base portal frame under H at the left knee and V at mid-span, the load factor\n"
-		   "ramped until it collapses (beam V L/2 = 4 Mp, sway H h = 4 Mp, combined H h + V L/2 = 6 Mp)\n" +
+		   "ramped until it collapses (beam V L/2 = 4 Mp, sway H h = 4 Mp, combined H h + V L/2 = 6 Mp); or, with\n"
+		   "--sway-drifts, a sway pushover under --knee-load against the second-order rigid-plastic\n"
+		   "H h / 4 Mp = (1 - 2 P h d / 4 Mp) / sqrt(1 - d^2)\n" +
 		   scene::usageOf(portalFlags()) +
 		   "--scene=drop-weight: a ball strikes a simply supported or clamped beam at mid-span (kinetic energy\n"
 		   "after the impact = Mp x sum of hinge rotations)\n" +

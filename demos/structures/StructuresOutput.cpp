@@ -86,7 +86,7 @@ std::string toJson(const PortalParameters& p, const PortalResult& r)
 	const PortalAnswer& a = r.answer;
 	std::vector<std::string> sites;
 	for (const PortalJointSite& s : a.sites) sites.push_back(s.name);
-	j.add("ramp", p.ramp_rate_per_s > 0).add("load_factor", p.load_factor).add("horizontal_load_N", p.horizontal_load_n).add("vertical_load_N", p.vertical_load_n).add("plastic_moment_Nm", a.plastic_moment_nm).add("beam_factor", a.beam_factor).add("sway_factor", a.sway_factor).add("combined_factor", a.combined_factor).add("analytic_collapse_factor", a.collapse_factor).add("analytic_mechanism", a.mechanism).add("analytic_hinges", siteNames(a, a.mechanism_sites)).add("collapse_factor", r.collapse_factor).add("collapse_error_pct", r.collapse_error_pct).add("holds", long(r.holds)).add("hinges", siteNames(a, r.mechanism_sites)).add("mechanism_matches", r.mechanism_matches).add("sites", sites).add("analytic_mechanism_rotations", a.mechanism_rotations).add("mechanism_rotations_rad", r.mechanism_rotations_rad).add("rotations_rad", r.rotations_rad).add("max_rotation_rad", r.max_rotation_rad).add("creep_rad", r.creep_rad).add("load_work_J", r.load_work_j).add("kinetic_J", r.kinetic_j).add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j).add("solver_fallbacks", long(r.solver_fallbacks)).add("steps", r.steps).add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
+	j.add("ramp", p.ramp_rate_per_s > 0 && p.sway_drifts.empty()).add("load_factor", p.load_factor).add("horizontal_load_N", p.horizontal_load_n).add("vertical_load_N", p.vertical_load_n).add("knee_load_N", p.knee_load_n).add("sway_drifts", p.sway_drifts).add("sway_load_ratios", r.sway_load_ratios).add("sway_measured_drifts", r.sway_measured_drifts).add("second_order_load_ratios", r.second_order_load_ratios).add("plastic_moment_Nm", a.plastic_moment_nm).add("beam_factor", a.beam_factor).add("sway_factor", a.sway_factor).add("combined_factor", a.combined_factor).add("analytic_collapse_factor", a.collapse_factor).add("analytic_mechanism", a.mechanism).add("analytic_hinges", siteNames(a, a.mechanism_sites)).add("collapse_factor", r.collapse_factor).add("collapse_error_pct", r.collapse_error_pct).add("holds", long(r.holds)).add("hinges", siteNames(a, r.mechanism_sites)).add("mechanism_matches", r.mechanism_matches).add("sites", sites).add("analytic_mechanism_rotations", a.mechanism_rotations).add("mechanism_rotations_rad", r.mechanism_rotations_rad).add("rotations_rad", r.rotations_rad).add("max_rotation_rad", r.max_rotation_rad).add("creep_rad", r.creep_rad).add("load_work_J", r.load_work_j).add("kinetic_J", r.kinetic_j).add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j).add("solver_fallbacks", long(r.solver_fallbacks)).add("steps", r.steps).add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
 	return j.str();
 }
 
@@ -131,9 +131,17 @@ std::string toSummary(const PortalParameters& p, const PortalResult& r)
 	const PortalAnswer& a = r.answer;
 	out << "portal frame, " << plastic::jointMethodName(p.solver.method) << ", " << plastic::solverKindName(p.solver.world.solver) << ", dt " << p.solver.world.internal_step_s << " s, " << p.solver.world.iterations
 		<< " iterations: " << r.steps << " steps (" << r.simulated_s << " s simulated, " << r.solver_fallbacks << " solver fallbacks) in " << r.wall_s << " s\n";
-	out << "  plastic analysis: beam " << a.beam_factor << ", sway " << a.sway_factor << ", combined " << a.combined_factor << " -> collapse factor "
-		<< a.collapse_factor << " (" << a.mechanism << ": " << joinNames(siteNames(a, a.mechanism_sites)) << ")\n";
-	if (p.ramp_rate_per_s > 0)
+	if (p.sway_drifts.empty())
+		out << "  plastic analysis: beam " << a.beam_factor << ", sway " << a.sway_factor << ", combined " << a.combined_factor << " -> collapse factor "
+			<< a.collapse_factor << " (" << a.mechanism << ": " << joinNames(siteNames(a, a.mechanism_sites)) << ")\n";
+	if (!p.sway_drifts.empty())
+	{
+		out << "  sway pushover with " << p.knee_load_n << " N on each knee, H h / (4 Mp) before each drift (rigid-plastic, second order):";
+		for (size_t k = 0; k < r.sway_load_ratios.size(); k++)
+			out << " " << r.sway_load_ratios[k] << " at " << r.sway_measured_drifts[k] << " (" << r.second_order_load_ratios[k] << ");";
+		out << "\n";
+	}
+	else if (p.ramp_rate_per_s > 0)
 		out << "  simulated: collapse factor " << r.collapse_factor << " (" << r.collapse_error_pct << " %), hinges "
 			<< joinNames(siteNames(a, r.mechanism_sites)) << (r.mechanism_matches ? " (as predicted)" : " (NOT as predicted)") << "\n";
 	else

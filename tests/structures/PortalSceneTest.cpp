@@ -4,6 +4,9 @@
 // bound 0.5 % catches a frame that gives early.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
+
 #include "Portal.h"
 
 using namespace structures;
@@ -122,4 +125,106 @@ TEST(PortalScene, BadParametersAreNamed)
 	ASSERT_EQ(e.size(), 2u);
 	EXPECT_EQ(e[0], "beam-segments: 3 is not an even number in [2, 100]");
 	EXPECT_EQ(e[1].rfind("horizontal-load: -5 is not in [0, ", 0), 0u) << e[1];
+}
+
+// Large displacements (issue 23): gravity on the knees and a sway pushover. The answers come from statics, not from
+// the scene: with the four hinges of the sway mechanism at Mp and the knees moved by d h along x (and down by
+// h (1 - cos theta)), virtual work gives H h cos(theta) + P h sin(theta) = 4 Mp, P = both knees' loads; a first-order
+// analysis says H h = 4 Mp at every drift.
+namespace
+{
+double secondOrderByHand(double mp, double h, double kneeLoad_n, double d) { return (4 * mp - 2 * kneeLoad_n * h * d) / (h * std::sqrt(1 - d * d)) * h / (4 * mp); }
+
+PortalParameters swayPushover(plastic::JointMethod method, double kneeLoad_n, std::vector<double> drifts)
+{
+	PortalParameters p;
+	p.solver.method = method;
+	p.knee_load_n = kneeLoad_n;
+	p.sway_drifts = std::move(drifts);
+	return p;
+}
+}  // namespace
+
+// The rigid-plastic frame at game settings (1/240 s): 100 kN on each knee take 15 % of the sway capacity per 0.1 of
+// drift; the load before each drift is the second-order one within 0.05 %, and the loads' work is what the hinges
+// booked.
+TEST(PortalPDelta, TheSwayMechanismCarriesTheSecondOrderLoad)
+{
+	const PortalParameters p = swayPushover(plastic::JointMethod::PlasticHinge, 100e3, {0.05, 0.1, 0.2});
+	const PortalResult r = runPortal(p);
+	const double mp = 400e6 * 0.05 * 0.1 * 0.1 / 4;
+	ASSERT_EQ(r.sway_load_ratios.size(), 3u);
+	for (size_t k = 0; k < 3; k++)
+	{
+		const double d = r.sway_measured_drifts[k];
+		EXPECT_NEAR(d, p.sway_drifts[k], 0.002) << k;
+		const double answer = secondOrderByHand(mp, p.height_m, p.knee_load_n, d);
+		EXPECT_NEAR(r.sway_load_ratios[k], answer, 5e-4 * answer) << "drift " << d;
+		EXPECT_NEAR(r.second_order_load_ratios[k], answer, 1e-9) << "the runner's answer";
+		std::printf("[ info     ] drift %.4f: H h / 4 Mp %.5f, second order %.5f, first order 1\n", d, r.sway_load_ratios[k], answer);
+	}
+	EXPECT_LT(r.sway_load_ratios[1], 0.9);  // the first-order answer is far off
+	EXPECT_NEAR(r.sway_load_ratios[2], 0.41, 0.01);
+	// the actuator's and the knee loads' work went into the hinges
+	EXPECT_GT(r.booked_plastic_work_j, 0.3 * 4 * mp * 0.2);
+	EXPECT_NEAR(r.booked_plastic_work_j, r.load_work_j, 0.002 * r.load_work_j);
+	EXPECT_LT(r.kinetic_j, 1e-3);
+	// without the knee loads, the lever's 1 / cos(theta) alone
+	const PortalResult free = runPortal(swayPushover(plastic::JointMethod::PlasticHinge, 0, {0.2}));
+	EXPECT_NEAR(free.sway_load_ratios[0], 1 / std::sqrt(1 - free.sway_measured_drifts[0] * free.sway_measured_drifts[0]), 5e-4);
+}
+
+// The elastic-plastic frame at steps where its joints are elastic (0.25 ms): the rigid segments carry the frame's P-Delta
+// exactly: the elastic sway stiffness falls by the knee loads over h (K(P) = K(0) - 2 P / h), and once the mechanism
+// has formed the load is the second-order rigid-plastic one. A square section: the default 50 mm wide columns buckle
+// out of the plane under the knee loads (a two-segment cantilever with EI/a joints: 0.382 EI_weak / a^2 = 35 kN).
+TEST(PortalPDelta, ElasticFrameLosesStiffnessByPOverH)
+{
+	std::vector<double> stiffness_n_m;
+	for (double P : {0.0, 100e3})
+	{
+		PortalParameters p = swayPushover(plastic::JointMethod::ElasticPlastic2, P, {0.005, 0.01});
+		p.section_width_m = 0.1;
+		p.solver.world.internal_step_s = 2.5e-4;
+		p.settle_s = 0;
+		const PortalResult r = runPortal(p);
+		ASSERT_EQ(r.sway_load_ratios.size(), 2u);
+		const double mp = 400e6 * 0.1 * 0.1 * 0.1 / 4;
+		const double H1 = r.sway_load_ratios[0] * 4 * mp / p.height_m, H2 = r.sway_load_ratios[1] * 4 * mp / p.height_m;
+		stiffness_n_m.push_back((H2 - H1) / ((r.sway_measured_drifts[1] - r.sway_measured_drifts[0]) * p.height_m));
+		EXPECT_EQ(r.booked_plastic_work_j, 0.0) << "elastic";
+	}
+	const double drop_n_m = 2 * 100e3 / 3.0;
+	std::printf("[ info     ] sway stiffness %.0f N/m, with 100 kN on each knee %.0f N/m (2 P / h = %.0f N/m)\n", stiffness_n_m[0], stiffness_n_m[1], drop_n_m);
+	EXPECT_NEAR(stiffness_n_m[0] - stiffness_n_m[1], drop_n_m, 0.03 * drop_n_m);
+}
+
+TEST(PortalPDelta, ElasticPlasticFrameReachesTheSecondOrderMechanism)
+{
+	for (plastic::JointMethod method : {plastic::JointMethod::ElasticPlastic, plastic::JointMethod::ElasticPlastic2})
+	{
+		PortalParameters p = swayPushover(method, 100e3, {0.2});
+		p.section_width_m = 0.1;
+		p.solver.world.internal_step_s = 2.5e-4;
+		p.drift_rate_per_s = 0.05;
+		p.settle_s = 0;
+		const PortalResult r = runPortal(p);
+		const double mp = 400e6 * 0.1 * 0.1 * 0.1 / 4;
+		const double answer = secondOrderByHand(mp, p.height_m, p.knee_load_n, r.sway_measured_drifts[0]);
+		EXPECT_NEAR(r.sway_load_ratios[0], answer, 1e-3 * answer) << plastic::jointMethodName(method);
+		EXPECT_GT(r.booked_plastic_work_j, 0.0);
+		std::printf("[ info     ] %s: drift %.4f: H h / 4 Mp %.5f, second order %.5f\n", plastic::jointMethodName(method), r.sway_measured_drifts[0],
+					r.sway_load_ratios[0], answer);
+	}
+}
+
+TEST(PortalPDelta, BadSwayParametersAreNamed)
+{
+	PortalParameters p;
+	p.sway_drifts = {0.1, 0.7};
+	p.knee_load_n = -1;
+	const std::vector<std::string> e = validatePortalParameters(p);
+	ASSERT_EQ(e.size(), 2u);
+	EXPECT_EQ(e[0].rfind("knee-load: -1 is not in [0, ", 0), 0u) << e[0];
+	EXPECT_EQ(e[1], "sway-drifts: drift 2 (0.7) is not in [-0.5, 0.5] (of h) or is the drift before it");
 }

@@ -25,6 +25,8 @@ TEST(SceneControls, StartAtTheRunnersDefaults)
 	EXPECT_EQ(p.span_m, pd.span_m);
 	EXPECT_EQ(p.height_m, pd.height_m);
 	EXPECT_NEAR(p.ramp_rate_per_s, pd.ramp_rate_per_s, 1e-9);
+	EXPECT_EQ(p.knee_load_n, pd.knee_load_n);
+	EXPECT_EQ(p.sway_drifts, pd.sway_drifts);
 	const DropWeightParameters d = dropWeightFromSliders(scene::initialValues(dropWeightControls()), plastic::JointMethod::ElasticPlastic2);
 	const DropWeightParameters dd;
 	EXPECT_EQ(d.weight_mass_kg, dd.weight_mass_kg);
