@@ -141,6 +141,20 @@ def section_properties(section, E, fy, fibres):
 # The model and the analysis
 
 
+def analyze_one(ops):
+    """One step of the analysis as set up: Newton, else KrylovNewton, else Newton from the initial stiffness. True
+    when one of them converged (Newton is the algorithm again after it)."""
+    if ops.analyze(1) == 0:
+        return True
+    for algorithm in (("KrylovNewton",), ("Newton", "-initial")):
+        ops.algorithm(*algorithm)
+        ok = ops.analyze(1) == 0
+        ops.algorithm("Newton")
+        if ok:
+            return True
+    return False
+
+
 class Cantilever:
     def __init__(self, ops, args, section):
         self.ops, self.args, self.section = ops, args, section
@@ -189,20 +203,11 @@ class Cantilever:
     def step(self, du, depth=0):
         """One displacement-controlled step of the tip's deflection by du (down positive); on failure, halves and
         tries other algorithms down to 1/64 of the step. False when it cannot."""
-        ops = self.ops
-        ops.integrator("DisplacementControl", self.tip, 2, -du)
-        if ops.analyze(1) == 0:
+        self.ops.integrator("DisplacementControl", self.tip, 2, -du)
+        if analyze_one(self.ops):
             self.steps += 1
             self.record()
             return True
-        for algorithm in (("KrylovNewton",), ("Newton", "-initial")):
-            ops.algorithm(*algorithm)
-            ok = ops.analyze(1) == 0
-            ops.algorithm("Newton")
-            if ok:
-                self.steps += 1
-                self.record()
-                return True
         if depth >= 6:
             return False
         return self.step(du / 2, depth + 1) and self.step(du / 2, depth + 1)

@@ -99,14 +99,8 @@ def analysis(ops, integrator):
 
 def step(ops, knee, du, depth=0):
     ops.integrator("DisplacementControl", knee, 1, du)
-    if ops.analyze(1) == 0:
+    if oc.analyze_one(ops):
         return True
-    for algorithm in (("KrylovNewton",), ("Newton", "-initial")):
-        ops.algorithm(*algorithm)
-        ok = ops.analyze(1) == 0
-        ops.algorithm("Newton")
-        if ok:
-            return True
     if depth >= 6:
         return False
     return step(ops, knee, du / 2, depth + 1) and step(ops, knee, du / 2, depth + 1)
