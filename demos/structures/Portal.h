@@ -6,11 +6,10 @@
 // independent mechanisms, computed from the parameters.
 #pragma once
 
-#include <memory>
 #include <string>
 #include <vector>
 
-#include "scene/SteppedScene.h"
+#include "scene/Scene.h"
 #include "scene/StructureRig.h"
 
 namespace structures
@@ -112,24 +111,8 @@ struct PortalResult
 std::vector<std::string> validatePortalParameters(const PortalParameters& p);
 PortalAnswer portalAnswer(const PortalParameters& p);
 // The scene, built from its parameters, one internal step at a time (the runner and the browser example both use it).
-class PortalScene : public scene::SteppedScene
-{
-public:
-	explicit PortalScene(const PortalParameters& p);
-	~PortalScene() override;
-	void step() override;
-	bool done() const override;
-	double time_s() const override;
-	btDiscreteDynamicsWorld& world() override;
-	std::vector<scene::JointView> joints() const override;
-	scene::SceneLedger ledger() const override;
-	scene::WorldBox viewEnvelope() const override;
-	PortalResult result() const;  // measured now
-
-private:
-	struct State;
-	std::unique_ptr<State> m;
-};
+// Its State, and the class's one instantiation, are in PortalScene.cpp (scene/Scene.h).
+using PortalScene = scene::Scene<PortalParameters, PortalResult>;
 
 // PortalScene stepped until it is done.
 PortalResult runPortal(const PortalParameters& p);

@@ -16,6 +16,7 @@
 #include "Portal.h"
 #include "scene/DriftActuator.h"
 #include "scene/Errors.h"
+#include "scene/SceneDefinition.h"
 
 namespace structures
 {
@@ -37,7 +38,12 @@ plastic::BeamSpec memberSpec(const PortalParameters& p, const btVector3& start, 
 	return spec;
 }
 }  // namespace
+}  // namespace structures
 
+// scene::Scene's State (scene/Scene.h) is specialized outside namespace structures; this lets it read structures' names.
+using namespace structures;
+
+template <>
 struct PortalScene::State
 {
 	explicit State(const PortalParameters& params)
@@ -67,9 +73,21 @@ struct PortalScene::State
 				   actuatorStiffness(p, columnLeft), 2.0 * std::sqrt(actuatorStiffness(p, columnLeft) * kneeMass_kg(columnLeft))),
 		  test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * answer.collapse_factor, p.collapse_rate_rad_s, p.rate_window_s,
 				p.mechanism_rotation_rad, p.hold_s}),
-		  ledger(btVector3(0, 0, 0))
+		  energyLedger(btVector3(0, 0, 0))
 	{
+		init();
 	}
+	void init();  // once every member is made: the frame's path, its joints' sites, the step's loads
+
+	// what scene::Scene's members hand on to (scene/SceneDefinition.h)
+	void step();
+	bool done() const;
+	double time_s() const;
+	btDiscreteDynamicsWorld& world();
+	std::vector<scene::JointView> joints() const;
+	scene::SceneLedger ledger() const;
+	scene::WorldBox viewEnvelope() const;
+	PortalResult result() const;
 
 	static plastic::JointSpec baseOf(const plastic::Beam& columnRight, btScalar L)
 	{
@@ -120,10 +138,10 @@ struct PortalScene::State
 	plastic::PointLoad kneeLeft, kneeRight;  // gravity
 	scene::DriftActuator actuator;           // the sway pushover's, at the left knee along x
 	CollapseTest test;
-	plastic::EnergyLedger ledger;
+	plastic::EnergyLedger energyLedger;
 	std::vector<const btRigidBody*> path;  // the bodies in order along the frame, the ground at both ends
 	std::vector<scene::PlanarAngle> angles;
-	std::vector<const plastic::Joint*> joints;  // site i joins body i and body i + 1
+	std::vector<const plastic::Joint*> frameJoints;  // site i joins body i and body i + 1
 	std::vector<scene::JointSite> sites;
 	bool finished = false;
 	bool finite = true;
@@ -132,9 +150,9 @@ struct PortalScene::State
 	std::vector<double> atThird;    // the rotations a third into the run: what they change by after it is creep
 };
 
-PortalScene::PortalScene(const PortalParameters& p) : m(std::make_unique<State>(p))
+void PortalScene::State::init()
 {
-	State& s = *m;
+	State& s = *this;
 	s.path = {nullptr};
 	for (const plastic::Beam* member : {&s.columnLeft, &s.beam, &s.columnRight})
 		for (btRigidBody* b : member->segments())
@@ -148,22 +166,22 @@ PortalScene::PortalScene(const PortalParameters& p) : m(std::make_unique<State>(
 	for (const plastic::Beam* member : {&s.columnLeft, &s.beam, &s.columnRight})
 		for (size_t j = 0; j < member->joints().size(); j++)
 		{
-			s.joints.push_back(&member->joints()[j]);
+			s.frameJoints.push_back(&member->joints()[j]);
 			pivots.push_back(member->jointSpecs()[j].pivot_m);
 		}
-	s.joints.push_back(&s.base);
+	s.frameJoints.push_back(&s.base);
 	pivots.push_back(s.baseSpec.pivot_m);
-	for (size_t i = 0; i < s.joints.size(); i++)
+	for (size_t i = 0; i < s.frameJoints.size(); i++)
 	{
 		// site i joins path[i] and path[i + 1]; the last one (the right base) joins the last segment and the ground
 		const btRigidBody* a = s.path[i];
 		const btRigidBody* b = s.path[i + 1] ? s.path[i + 1] : s.path[i];
 		if (!s.path[i + 1]) a = nullptr;
-		s.sites.push_back(scene::jointSite(*s.joints[i], a, *b, pivots[i]));
+		s.sites.push_back(scene::jointSite(*s.frameJoints[i], a, *b, pivots[i]));
 	}
-	for (size_t i = 1; i + 1 < s.path.size(); i++) s.ledger.addBody(*s.path[i]);
+	for (size_t i = 1; i + 1 < s.path.size(); i++) s.energyLedger.addBody(*s.path[i]);
 	s.ramp = p.ramp_rate_per_s > 0 && !s.pushover();
-	State* state = m.get();
+	State* state = this;
 	s.rig.beforeEachStep([state](double step_s)
 						 {
 		const double t = state->rig.time_s();
@@ -193,19 +211,17 @@ PortalScene::PortalScene(const PortalParameters& p) : m(std::make_unique<State>(
 		for (scene::PlanarAngle& a : state->angles) a.update(); });
 }
 
-PortalScene::~PortalScene() = default;
-
-bool PortalScene::done() const
+bool PortalScene::State::done() const
 {
-	const double end_s = m->pushover() ? std::min(m->p.duration_s, m->actuator.end_s() + m->p.settle_s) : m->p.duration_s;
-	return m->finished || m->rig.time_s() >= end_s - 1e-12;
+	const double end_s = pushover() ? std::min(p.duration_s, actuator.end_s() + p.settle_s) : p.duration_s;
+	return finished || rig.time_s() >= end_s - 1e-12;
 }
-double PortalScene::time_s() const { return m->rig.time_s(); }
-btDiscreteDynamicsWorld& PortalScene::world() { return m->rig.world(); }
+double PortalScene::State::time_s() const { return rig.time_s(); }
+btDiscreteDynamicsWorld& PortalScene::State::world() { return rig.world(); }
 
-void PortalScene::step()
+void PortalScene::State::step()
 {
-	State& s = *m;
+	State& s = *this;
 	if (done()) return;
 	s.rig.step();
 	const std::vector<double> now = s.rotations();
@@ -223,9 +239,9 @@ void PortalScene::step()
 	if (s.test.done()) s.finished = true;
 }
 
-PortalResult PortalScene::result() const
+PortalResult PortalScene::State::result() const
 {
-	const State& s = *m;
+	const State& s = *this;
 	PortalResult r;
 	r.answer = s.answer;
 	const double mp = s.answer.plastic_moment_nm;
@@ -246,8 +262,8 @@ PortalResult PortalScene::result() const
 		for (double force_n : s.actuator.meanForces_n()) r.sway_load_ratios.push_back(force_n * s.p.height_m / (4 * mp));
 		for (double d : r.sway_measured_drifts) r.second_order_load_ratios.push_back(swaySecondOrderRatio(s.p, d));
 	}
-	r.kinetic_j = s.ledger.measure().kinetic_j;
-	for (const plastic::Joint* j : s.joints) r.booked_plastic_work_j += j->plasticWork_j();
+	r.kinetic_j = s.energyLedger.measure().kinetic_j;
+	for (const plastic::Joint* j : s.frameJoints) r.booked_plastic_work_j += j->plasticWork_j();
 	for (double x : r.rotations_rad) r.geometric_plastic_work_j += mp * std::fabs(x);
 	r.solver_fallbacks = s.rig.solverFallbacks();
 	r.steps = s.rig.steps();
@@ -256,20 +272,20 @@ PortalResult PortalScene::result() const
 	return r;
 }
 
-std::vector<scene::JointView> PortalScene::joints() const
+std::vector<scene::JointView> PortalScene::State::joints() const
 {
-	const std::vector<double> rotations = m->rotations();
+	const std::vector<double> rotations = this->rotations();
 	std::vector<scene::JointView> views;
-	for (size_t i = 0; i < m->sites.size(); i++) views.push_back(scene::jointView(m->sites[i], rotations[i]));
+	for (size_t i = 0; i < sites.size(); i++) views.push_back(scene::jointView(sites[i], rotations[i]));
 	return views;
 }
 
-scene::SceneLedger PortalScene::ledger() const
+scene::SceneLedger PortalScene::State::ledger() const
 {
 	const PortalResult r = result();
 	const PortalAnswer& a = r.answer;
 	scene::SceneLedger l;
-	l.title = std::string("portal frame, ") + plastic::jointMethodName(m->p.solver.method);
+	l.title = std::string("portal frame, ") + plastic::jointMethodName(p.solver.method);
 	l.time_s = r.simulated_s;
 	l.load_work_j = r.load_work_j;
 	l.kinetic_j = r.kinetic_j;
@@ -280,15 +296,15 @@ scene::SceneLedger PortalScene::ledger() const
 	l.answer.push_back(line);
 	std::snprintf(line, sizeof line, "collapse factor %.3f (%s)", a.collapse_factor, a.mechanism.c_str());
 	l.answer.push_back(line);
-	if (m->pushover())
+	if (pushover())
 	{
-		std::snprintf(line, sizeof line, "sway drift %.4f, H h / 4 Mp %.3f", m->actuator.drift(), m->actuator.force_n() * m->p.height_m / (4 * a.plastic_moment_nm));
+		std::snprintf(line, sizeof line, "sway drift %.4f, H h / 4 Mp %.3f", actuator.drift(), actuator.force_n() * p.height_m / (4 * a.plastic_moment_nm));
 		l.status.push_back(line);
-		std::snprintf(line, sizeof line, "rigid-plastic, second order: %.3f", swaySecondOrderRatio(m->p, m->actuator.drift()));
+		std::snprintf(line, sizeof line, "rigid-plastic, second order: %.3f", swaySecondOrderRatio(p, actuator.drift()));
 		l.answer.push_back(line);
 		return l;
 	}
-	std::snprintf(line, sizeof line, "load factor %.3f", m->test.factor());
+	std::snprintf(line, sizeof line, "load factor %.3f", test.factor());
 	l.status.push_back(line);
 	if (std::isfinite(r.collapse_factor))
 	{
@@ -299,16 +315,10 @@ scene::SceneLedger PortalScene::ledger() const
 	return l;
 }
 
-PortalResult runPortal(const PortalParameters& p) { return scene::runToEnd<PortalScene>(p); }
-}  // namespace structures
-
-namespace structures
-{
-scene::WorldBox PortalScene::viewEnvelope() const
+scene::WorldBox PortalScene::State::viewEnvelope() const
 {
 	// The frame (columns 0..h at x = 0 and L, the beam at h) and its mechanism: the columns sway and the beam sags by
 	// turns of a few mechanism rotations (the run holds the load once the collapse is seen and stops soon after).
-	const PortalParameters& p = m->p;
 	double turn_rad = std::max(0.2, 4 * p.mechanism_rotation_rad);
 	for (double d : p.sway_drifts) turn_rad = std::max(turn_rad, std::fabs(d) + 0.05);
 	const double pad_m = p.section_depth_m;
@@ -317,4 +327,11 @@ scene::WorldBox PortalScene::viewEnvelope() const
 	box.max_m = btVector3(btScalar(p.span_m + turn_rad * p.height_m + pad_m), btScalar(p.height_m + pad_m), btScalar(p.section_width_m));
 	return box;
 }
+
+namespace structures
+{
+PortalResult runPortal(const PortalParameters& p) { return scene::runToEnd<PortalScene>(p); }
 }  // namespace structures
+
+// the class, once (scene/Scene.h)
+template class scene::Scene<PortalParameters, PortalResult>;
