@@ -6,12 +6,13 @@
 // contacts and the constraints.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "plastic/JointFactory.h"
 #include "plastic/SolverSettings.h"
-#include "scene/Scene.h"
+#include "scene/SteppedScene.h"
 
 namespace game
 {
@@ -107,15 +108,29 @@ struct WreckingBallResult
 	bool finite = true;
 };
 
-// The scene, one 60 Hz frame per step() (each frame: the solver settings' internal steps); building it throws
-// std::invalid_argument naming a bad parameter.
-// Its State, and the class's one instantiation, are in WreckingBallScene.cpp (scene/Scene.h).
-using WreckingBallScene = scene::Scene<WreckingBallParameters, WreckingBallResult>;
-// the ball, the frame's bodies (every segment), the chain's links, the parameters it was built from
-const btRigidBody& wreckingBall(const WreckingBallScene& scene);
-std::vector<const btRigidBody*> wreckingBallFrameBodies(const WreckingBallScene& scene);
-std::vector<const btRigidBody*> wreckingBallChainBodies(const WreckingBallScene& scene);
-const WreckingBallParameters& wreckingBallSceneParameters(const WreckingBallScene& scene);
+// The scene, one 60 Hz frame per step() (each frame: the solver settings' internal steps).
+class WreckingBallScene : public scene::SteppedScene
+{
+public:
+	explicit WreckingBallScene(const WreckingBallParameters& p);  // throws std::invalid_argument naming a bad parameter
+	~WreckingBallScene() override;
+	void step() override;
+	bool done() const override;
+	double time_s() const override;
+	btDiscreteDynamicsWorld& world() override;
+	std::vector<scene::JointView> joints() const override;
+	scene::SceneLedger ledger() const override;
+	scene::WorldBox viewEnvelope() const override;
+	WreckingBallResult result() const;  // measured now
+	const btRigidBody& ball() const;
+	std::vector<const btRigidBody*> frameBodies() const;
+	std::vector<const btRigidBody*> chainBodies() const;
+	const WreckingBallParameters& parameters() const;
+
+private:
+	struct State;
+	std::unique_ptr<State> m;
+};
 
 // WreckingBallScene stepped until it is done.
 WreckingBallResult runWreckingBall(const WreckingBallParameters& p);

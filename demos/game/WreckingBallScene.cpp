@@ -16,7 +16,6 @@
 #include "scene/StructureRig.h"
 #include "WreckingBall.h"
 #include "scene/Errors.h"
-#include "scene/SceneDefinition.h"
 
 namespace game
 {
@@ -34,34 +33,10 @@ std::unique_ptr<btRigidBody> makeBody(double mass_kg, btCollisionShape& shape, c
 // the frame's bodies: they collide with the ball and the ground, not with each other
 const int kFrameGroup = 1 << 6;
 }  // namespace
-}  // namespace game
 
-// scene::Scene's State (scene/Scene.h) is specialized outside namespace game; this lets it read game's names.
-using namespace game;
-
-template <>
 struct WreckingBallScene::State
 {
-	explicit State(const WreckingBallParameters& params) : p(validated(params)), estimate(wreckingBallEstimate(p)), structure(p.solver), energyLedger(btVector3(0, btScalar(-p.gravity_m_s2), 0)), swing(btVector3(0, btScalar(-p.gravity_m_s2), 0)) { init(); }
-	~State();
-	void init();  // once every member is made: the ground, the frame, the ball and its chain, the measures
-	// params, once they are valid; else throws std::invalid_argument naming the first bad one, before anything is built
-	static const WreckingBallParameters& validated(const WreckingBallParameters& params)
-	{
-		const std::vector<std::string> errors = validateWreckingBallParameters(params);
-		if (!errors.empty()) throw std::invalid_argument(errors.front());
-		return params;
-	}
-
-	// what scene::Scene's members hand on to (scene/SceneDefinition.h)
-	void step();
-	bool done() const;
-	double time_s() const;
-	btDiscreteDynamicsWorld& world();
-	std::vector<scene::JointView> joints() const;
-	scene::SceneLedger ledger() const;
-	scene::WorldBox viewEnvelope() const;
-	WreckingBallResult result() const;
+	explicit State(const WreckingBallParameters& params) : p(params), estimate(wreckingBallEstimate(p)), structure(p.solver), ledger(btVector3(0, btScalar(-p.gravity_m_s2), 0)), swing(btVector3(0, btScalar(-p.gravity_m_s2), 0)) {}
 
 	plastic::BeamSpec memberSpec(const btVector3& start, const btVector3& end, int segments) const
 	{
@@ -89,8 +64,8 @@ struct WreckingBallScene::State
 	WreckingBallParameters p;
 	WreckingBallEstimate estimate;
 	plastic::StructureWorld structure;
-	plastic::EnergyLedger energyLedger;  // every moving body and every joint
-	plastic::EnergyLedger swing;         // the ball and its chain
+	plastic::EnergyLedger ledger;  // every moving body and every joint
+	plastic::EnergyLedger swing;   // the ball and its chain
 	// the ground: a static slab whose top is y = 0, under the whole frame
 	std::unique_ptr<btBoxShape> groundShape;
 	std::unique_ptr<btRigidBody> ground;
@@ -100,7 +75,7 @@ struct WreckingBallScene::State
 	std::vector<std::vector<std::unique_ptr<plastic::Beam>>> beams;
 	std::vector<plastic::JointSpec> endSpecs;
 	std::vector<plastic::Joint> endJoints;
-	std::vector<const plastic::Joint*> frameJoints;  // one storey and bay: along the frame, base-left .. base-right
+	std::vector<const plastic::Joint*> joints;  // one storey and bay: along the frame, base-left .. base-right
 	std::vector<std::string> names;
 	std::vector<scene::JointSite> sites;
 	std::vector<std::unique_ptr<scene::PlanarAngle>> bodyAngles;
@@ -116,7 +91,7 @@ struct WreckingBallScene::State
 	double impact_kinetic_j = 0;
 	double impact_speed_m_s = 0;
 	bool impacted = false;
-	double clock_s = 0;         // frames x frame time
+	double time_s = 0;          // frames x frame time
 	double internalTime_s = 0;  // internal steps taken
 	long frames = 0;
 	long internalSteps = 0;
@@ -146,8 +121,8 @@ void WreckingBallScene::State::afterInternalStep(double step_s)
 	internalSteps++;
 	internalTime_s += step_s;
 	for (auto& a : bodyAngles) a->update();
-	for (size_t i = 0; i < frameJoints.size(); i++)
-		if (std::isnan(measuredAtBreak[i]) && !frameJoints[i]->constraint->isEnabled())
+	for (size_t i = 0; i < joints.size(); i++)
+		if (std::isnan(measuredAtBreak[i]) && !joints[i]->constraint->isEnabled())
 		{
 			measuredAtBreak[i] = relativeRotation(i);
 			brokenAt_s[i] = internalTime_s;
@@ -162,9 +137,12 @@ void WreckingBallScene::State::afterInternalStep(double step_s)
 	previousBallSpeed_m_s = ball->getLinearVelocity().length();
 }
 
-void WreckingBallScene::State::init()
+WreckingBallScene::WreckingBallScene(const WreckingBallParameters& p)
 {
-	State& s = *this;
+	const std::vector<std::string> errors = validateWreckingBallParameters(p);
+	if (!errors.empty()) throw std::invalid_argument(errors.front());
+	m = std::make_unique<State>(p);
+	State& s = *m;
 	btDiscreteDynamicsWorld& world = s.structure.world();
 	world.setGravity(btVector3(0, btScalar(-p.gravity_m_s2), 0));
 	const btScalar L = btScalar(p.span_m), h = btScalar(p.height_m);
@@ -266,7 +244,7 @@ void WreckingBallScene::State::init()
 	std::vector<const btRigidBody*> bodies = {nullptr};
 	for (const FrameJoint& j : frame)
 	{
-		s.frameJoints.push_back(j.joint);
+		s.joints.push_back(j.joint);
 		s.names.push_back(j.name);
 		for (const btRigidBody* body : {j.a, j.b})
 			if (std::find(bodies.begin(), bodies.end(), body) == bodies.end()) bodies.push_back(body);
@@ -279,13 +257,13 @@ void WreckingBallScene::State::init()
 		s.angles.push_back({angleOf(j.a), angleOf(j.b)});
 		s.sites.push_back(scene::jointSite(*j.joint, j.a, *j.b, j.pivot));
 	}
-	for (const plastic::Joint* j : s.frameJoints) s.energyLedger.addJoint(*j);
-	s.measuredAtBreak.assign(s.frameJoints.size(), std::nan(""));
-	s.brokenAt_s.assign(s.frameJoints.size(), -1);
+	for (const plastic::Joint* j : s.joints) s.ledger.addJoint(*j);
+	s.measuredAtBreak.assign(s.joints.size(), std::nan(""));
+	s.brokenAt_s.assign(s.joints.size(), -1);
 	for (size_t i = 1; i < bodies.size(); i++)
 	{
 		s.frameBodies.push_back(bodies[i]);
-		s.energyLedger.addBody(*bodies[i]);
+		s.ledger.addBody(*bodies[i]);
 	}
 
 	// the ball at the release angle, away from the frame (towards -x); at the bottom of its swing 2 cm from the column
@@ -301,23 +279,24 @@ void WreckingBallScene::State::init()
 	pendulum.release_direction = -1;
 	s.pendulum = std::make_unique<Pendulum>(world, pendulum);
 	s.ball = &s.pendulum->ball();
-	s.energyLedger.addBody(*s.ball);
+	s.ledger.addBody(*s.ball);
 	s.swing.addBody(*s.ball);
 	for (const btRigidBody* l : s.pendulum->links())
 	{
-		s.energyLedger.addBody(*l);
+		s.ledger.addBody(*l);
 		s.swing.addBody(*l);
 	}
 
-	const plastic::Energies e = s.energyLedger.measure();
+	const plastic::Energies e = s.ledger.measure();
 	s.initial_mechanical_j = e.kinetic_j + e.potential_j;
 	s.previousChainKinetic_j = s.chainAndBallKinetic();
-	world.setInternalTickCallback(State::tick, this);
+	world.setInternalTickCallback(State::tick, m.get());
 }
 
-WreckingBallScene::State::~State()
+WreckingBallScene::~WreckingBallScene()
 {
-	State& s = *this;
+	if (!m) return;
+	State& s = *m;
 	btDiscreteDynamicsWorld& world = s.structure.world();
 	world.setInternalTickCallback(nullptr);
 	s.pendulum.reset();
@@ -330,13 +309,17 @@ WreckingBallScene::State::~State()
 	world.removeRigidBody(s.ground.get());
 }
 
-bool WreckingBallScene::State::done() const { return !finite || clock_s >= p.duration_s - 1e-9; }
-double WreckingBallScene::State::time_s() const { return clock_s; }
-btDiscreteDynamicsWorld& WreckingBallScene::State::world() { return structure.world(); }
+bool WreckingBallScene::done() const { return !m->finite || m->time_s >= m->p.duration_s - 1e-9; }
+double WreckingBallScene::time_s() const { return m->time_s; }
+btDiscreteDynamicsWorld& WreckingBallScene::world() { return m->structure.world(); }
+const btRigidBody& WreckingBallScene::ball() const { return *m->ball; }
+const WreckingBallParameters& WreckingBallScene::parameters() const { return m->p; }
+std::vector<const btRigidBody*> WreckingBallScene::frameBodies() const { return m->frameBodies; }
+std::vector<const btRigidBody*> WreckingBallScene::chainBodies() const { return m->pendulum->links(); }
 
-void WreckingBallScene::State::step()
+void WreckingBallScene::step()
 {
-	State& s = *this;
+	State& s = *m;
 	if (done()) return;
 	const double frame_s = 1.0 / s.p.frame_rate_hz;
 	const auto start = std::chrono::steady_clock::now();
@@ -345,30 +328,30 @@ void WreckingBallScene::State::step()
 	s.wall_s += wall;
 	s.maxFrameWall_s = std::max(s.maxFrameWall_s, wall);
 	s.frames++;
-	s.clock_s = s.frames * frame_s;
+	s.time_s = s.frames * frame_s;
 	// energy gained since the start: what the bodies and joints hold now, booked plastic work included, against
 	// the mechanical energy at the start (the ball starts at rest: its potential energy)
-	const plastic::Energies e = s.energyLedger.measure();
+	const plastic::Energies e = s.ledger.measure();
 	const double balanceGain = e.kinetic_j + e.potential_j + e.elastic_j + e.plastic_j - s.initial_mechanical_j;
 	s.maxGain_j = std::max(s.maxGain_j, balanceGain);
 	if (!std::isfinite(balanceGain)) s.finite = false;
 }
 
-WreckingBallResult WreckingBallScene::State::result() const
+WreckingBallResult WreckingBallScene::result() const
 {
-	const State& s = *this;
+	const State& s = *m;
 	WreckingBallResult r;
 	r.estimate = s.estimate;
 	const double mp = s.estimate.plastic_moment_nm;
-	for (size_t i = 0; i < s.frameJoints.size(); i++)
+	for (size_t i = 0; i < s.joints.size(); i++)
 	{
 		FrameJointResult j;
 		j.name = s.names[i];
 		j.plastic_moment_nm = mp;
-		j.booked_rotation_rad = s.frameJoints[i]->plasticRotation_rad();
-		j.broken = !s.frameJoints[i]->constraint->isEnabled();
+		j.booked_rotation_rad = s.joints[i]->plasticRotation_rad();
+		j.broken = !s.joints[i]->constraint->isEnabled();
 		j.measured_rotation_rad = std::isnan(s.measuredAtBreak[i]) ? s.relativeRotation(i) : s.measuredAtBreak[i];
-		j.booked_work_j = s.frameJoints[i]->plasticWork_j();
+		j.booked_work_j = s.joints[i]->plasticWork_j();
 		// a rigid-plastic joint absorbs Mp over its rotation up to its limit: the rest of the step that broke it is
 		// free motion
 		j.measured_work_j = mp * (j.broken ? std::min(std::fabs(j.measured_rotation_rad), s.p.max_plastic_rotation_rad) : std::fabs(j.measured_rotation_rad));
@@ -376,10 +359,10 @@ WreckingBallResult WreckingBallScene::State::result() const
 		r.plastic_booked_j += j.booked_work_j;
 		r.plastic_measured_j += j.measured_work_j;
 		if (j.broken) r.broken_joints++;
-		if ((s.frameJoints[i]->plasticState ? j.booked_rotation_rad : std::fabs(j.measured_rotation_rad)) > scene::kYieldedRotation_rad) r.yielded_joints++;
+		if ((s.joints[i]->plasticState ? j.booked_rotation_rad : std::fabs(j.measured_rotation_rad)) > scene::kYieldedRotation_rad) r.yielded_joints++;
 		r.joints.push_back(j);
 	}
-	const plastic::Energies e = s.energyLedger.measure();
+	const plastic::Energies e = s.ledger.measure();
 	r.impact_kinetic_j = s.impact_kinetic_j;
 	r.impact_speed_m_s = s.impact_speed_m_s;
 	r.gravity_work_j = s.initial_mechanical_j - e.potential_j;  // the ball starts at rest: the initial mechanical energy is potential
@@ -389,27 +372,27 @@ WreckingBallResult WreckingBallScene::State::result() const
 	r.dissipated_j = r.gravity_work_j - (r.kinetic_j + r.elastic_j + r.plastic_booked_j);
 	r.frames = s.frames;
 	r.internal_steps = s.internalSteps;
-	r.simulated_s = s.clock_s;
+	r.simulated_s = s.time_s;
 	r.wall_s = s.wall_s;
-	r.real_time_factor = s.wall_s > 0 ? s.clock_s / s.wall_s : 0.0;
+	r.real_time_factor = s.wall_s > 0 ? s.time_s / s.wall_s : 0.0;
 	r.max_frame_wall_s = s.maxFrameWall_s;
 	r.solver_fallbacks = s.structure.solverFallbacks();
 	r.finite = s.finite;
 	return r;
 }
 
-std::vector<scene::JointView> WreckingBallScene::State::joints() const
+std::vector<scene::JointView> WreckingBallScene::joints() const
 {
 	std::vector<scene::JointView> views;
-	for (size_t i = 0; i < sites.size(); i++) views.push_back(scene::jointView(sites[i], relativeRotation(i)));
+	for (size_t i = 0; i < m->sites.size(); i++) views.push_back(scene::jointView(m->sites[i], m->relativeRotation(i)));
 	return views;
 }
 
-scene::SceneLedger WreckingBallScene::State::ledger() const
+scene::SceneLedger WreckingBallScene::ledger() const
 {
 	const WreckingBallResult r = result();
 	scene::SceneLedger l;
-	l.title = std::string("wrecking ball, ") + plastic::jointMethodName(p.method);
+	l.title = std::string("wrecking ball, ") + plastic::jointMethodName(m->p.method);
 	l.time_s = r.simulated_s;
 	l.load_work_j = r.gravity_work_j;
 	l.kinetic_j = r.kinetic_j;
@@ -418,7 +401,7 @@ scene::SceneLedger WreckingBallScene::State::ledger() const
 	char line[200];
 	std::snprintf(line, sizeof line, "release: %.0f J, %.2f m/s at the bottom", r.estimate.release_energy_j, r.estimate.impact_speed_m_s);
 	l.answer.push_back(line);
-	std::snprintf(line, sizeof line, "Mp %.1f kN m, breaks past %.2f rad", r.estimate.plastic_moment_nm / 1e3, p.max_plastic_rotation_rad);
+	std::snprintf(line, sizeof line, "Mp %.1f kN m, breaks past %.2f rad", r.estimate.plastic_moment_nm / 1e3, m->p.max_plastic_rotation_rad);
 	l.answer.push_back(line);
 	if (r.impact_kinetic_j > 0)
 	{
@@ -431,10 +414,16 @@ scene::SceneLedger WreckingBallScene::State::ledger() const
 	return l;
 }
 
-scene::WorldBox WreckingBallScene::State::viewEnvelope() const
+WreckingBallResult runWreckingBall(const WreckingBallParameters& p) { return scene::runToEnd<WreckingBallScene>(p); }
+}  // namespace game
+
+namespace game
+{
+scene::WorldBox WreckingBallScene::viewEnvelope() const
 {
 	// The frame (bays x span by storeys x height on the ground), the ball's swing from its release (left of the frame)
 	// up to the chain's pivot, and the debris: broken members fall over to the right, as far as a storey's height.
+	const WreckingBallParameters& p = m->p;
 	const double radius_m = p.chain_length_m + p.ball_radius_m;  // pivot to the ball's centre
 	const double bottom_x_m = -(p.section_depth_m / 2 + p.ball_radius_m + 0.02);
 	const double pivot_y_m = p.impact_height_m + radius_m;
@@ -446,16 +435,4 @@ scene::WorldBox WreckingBallScene::State::viewEnvelope() const
 						  btScalar(p.ball_radius_m + pad_m));
 	return box;
 }
-
-namespace game
-{
-const btRigidBody& wreckingBall(const WreckingBallScene& scene) { return *scene.state().ball; }
-std::vector<const btRigidBody*> wreckingBallFrameBodies(const WreckingBallScene& scene) { return scene.state().frameBodies; }
-std::vector<const btRigidBody*> wreckingBallChainBodies(const WreckingBallScene& scene) { return scene.state().pendulum->links(); }
-const WreckingBallParameters& wreckingBallSceneParameters(const WreckingBallScene& scene) { return scene.state().p; }
-
-WreckingBallResult runWreckingBall(const WreckingBallParameters& p) { return scene::runToEnd<WreckingBallScene>(p); }
 }  // namespace game
-
-// the class, once (scene/Scene.h)
-template class scene::Scene<WreckingBallParameters, WreckingBallResult>;

@@ -5,11 +5,12 @@
 // root and stops where the load's work equals the plastic work, P L sin(theta) = Mp theta.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "scene/Scene.h"
+#include "scene/SteppedScene.h"
 #include "scene/StructureRig.h"
 #include "plastic/StressStrain.h"
 
@@ -95,8 +96,24 @@ struct CantileverResult
 std::vector<std::string> validateCantileverParameters(const CantileverParameters& p);
 CantileverAnswer cantileverAnswer(const CantileverParameters& p);
 // The scene, built from its parameters, one internal step at a time (the runner and the browser example both use it).
-// Its State, and the class's one instantiation, are in CantileverScene.cpp (scene/Scene.h).
-using CantileverScene = scene::Scene<CantileverParameters, CantileverResult>;
+class CantileverScene : public scene::SteppedScene
+{
+public:
+	explicit CantileverScene(const CantileverParameters& p);
+	~CantileverScene() override;
+	void step() override;
+	bool done() const override;
+	double time_s() const override;
+	btDiscreteDynamicsWorld& world() override;
+	std::vector<scene::JointView> joints() const override;
+	scene::SceneLedger ledger() const override;
+	scene::WorldBox viewEnvelope() const override;
+	CantileverResult result() const;  // measured now
+
+private:
+	struct State;
+	std::unique_ptr<State> m;
+};
 
 // CantileverScene stepped until it is done.
 CantileverResult runCantilever(const CantileverParameters& p);

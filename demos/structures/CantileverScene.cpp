@@ -14,12 +14,9 @@
 #include "scene/Measures.h"
 #include "scene/DriftActuator.h"
 #include "scene/Errors.h"
-#include "scene/SceneDefinition.h"
 
-// scene::Scene's State (scene/Scene.h) is specialized outside namespace structures; this lets it read structures' names.
-using namespace structures;
-
-template <>
+namespace structures
+{
 struct CantileverScene::State
 {
 	explicit State(const CantileverParameters& params)
@@ -32,21 +29,9 @@ struct CantileverScene::State
 		  actuator(*beam.segments().back(), tipPoint(beam), btVector3(0, -1, 0), btVector3(btScalar(p.length_m), 0, 0), driftPath(p), actuatorStiffness(p, beam),
 				   2.0 * std::sqrt(actuatorStiffness(p, beam) * tipMass_kg(beam))),
 		  test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * answer.collapse_ratio, p.collapse_rate_rad_s, p.rate_window_s, p.mechanism_rotation_rad, p.hold_s}),
-		  energyLedger(btVector3(0, 0, 0))
+		  ledger(btVector3(0, 0, 0))
 	{
-		init();
 	}
-	void init();  // once every member is made: the beam's flags, the measures, the step's loads
-
-	// what scene::Scene's members hand on to (scene/SceneDefinition.h)
-	void step();
-	bool done() const;
-	double time_s() const;
-	btDiscreteDynamicsWorld& world();
-	std::vector<scene::JointView> joints() const;
-	scene::SceneLedger ledger() const;
-	scene::WorldBox viewEnvelope() const;
-	CantileverResult result() const;
 
 	static plastic::BeamSpec beamSpec(const CantileverParameters& p)
 	{
@@ -111,7 +96,7 @@ struct CantileverScene::State
 	scene::DriftActuator actuator;
 	CollapseTest test;
 	std::vector<scene::PlanarAngle> angles;  // the ground, then each segment
-	plastic::EnergyLedger energyLedger;
+	plastic::EnergyLedger ledger;
 	std::vector<scene::JointSite> sites;
 	bool ramp = false;
 	bool finished = false;
@@ -124,18 +109,18 @@ struct CantileverScene::State
 	std::vector<double> atThird;  // the rotations a third into the run: what they change by after it is creep
 };
 
-void CantileverScene::State::init()
+CantileverScene::CantileverScene(const CantileverParameters& p) : m(std::make_unique<State>(p))
 {
-	State& s = *this;
+	State& s = *m;
 	for (btRigidBody* b : s.beam.segments()) b->setCollisionFlags(b->getCollisionFlags() | btCollisionObject::CF_NO_CONTACT_RESPONSE);
 	s.ramp = p.ramp_rate_per_s > 0;
 	s.load.setFactor(s.ramp || s.pushover() ? 0.0 : p.load_ratio);
 	s.angles.emplace_back(nullptr);
 	for (btRigidBody* b : s.beam.segments()) s.angles.emplace_back(b);
-	for (btRigidBody* b : s.beam.segments()) s.energyLedger.addBody(*b);
+	for (btRigidBody* b : s.beam.segments()) s.ledger.addBody(*b);
 	for (size_t j = 0; j < s.beam.joints().size(); j++)
 		s.sites.push_back(scene::jointSite(s.beam.joints()[j], j ? s.beam.segments()[j - 1] : nullptr, *s.beam.segments()[j], s.beam.jointSpecs()[j].pivot_m));
-	State* state = this;
+	State* state = m.get();
 	s.rig.beforeEachStep([state](double step_s)
 						 {
 		if (state->ramp)
@@ -153,17 +138,19 @@ void CantileverScene::State::init()
 		for (scene::PlanarAngle& a : state->angles) a.update(); });
 }
 
-bool CantileverScene::State::done() const
-{
-	const double end_s = pushover() ? std::min(p.duration_s, pushoverEnd_s()) : p.duration_s;
-	return finished || rig.time_s() >= end_s - 1e-12;
-}
-double CantileverScene::State::time_s() const { return rig.time_s(); }
-btDiscreteDynamicsWorld& CantileverScene::State::world() { return rig.world(); }
+CantileverScene::~CantileverScene() = default;
 
-void CantileverScene::State::step()
+bool CantileverScene::done() const
 {
-	State& s = *this;
+	const double end_s = m->pushover() ? std::min(m->p.duration_s, m->pushoverEnd_s()) : m->p.duration_s;
+	return m->finished || m->rig.time_s() >= end_s - 1e-12;
+}
+double CantileverScene::time_s() const { return m->rig.time_s(); }
+btDiscreteDynamicsWorld& CantileverScene::world() { return m->rig.world(); }
+
+void CantileverScene::step()
+{
+	State& s = *m;
 	if (done()) return;
 	s.rig.step();
 	if (s.atThird.empty() && s.rig.time_s() >= s.p.duration_s / 3 - 1e-12)
@@ -192,7 +179,7 @@ void CantileverScene::State::step()
 	}
 	else if (!s.p.follower_load && s.p.load_ratio > 1 && !s.pushover())
 	{
-		const double kinetic = s.energyLedger.measure().kinetic_j;
+		const double kinetic = s.ledger.measure().kinetic_j;
 		s.maxKinetic = std::max(s.maxKinetic, kinetic);
 		// stopped: (almost) no kinetic energy left, or turning back (elastic joints spring back)
 		if (root > 0.01 && (kinetic < 1e-4 * s.maxKinetic || root < s.max_root_rotation_rad - 1e-3))
@@ -203,9 +190,9 @@ void CantileverScene::State::step()
 	}
 }
 
-CantileverResult CantileverScene::State::result() const
+CantileverResult CantileverScene::result() const
 {
-	const State& s = *this;
+	const State& s = *m;
 	CantileverResult r;
 	r.answer = s.answer;
 	const double mp = s.answer.plastic_moment_nm;
@@ -229,7 +216,7 @@ CantileverResult CantileverScene::State::result() const
 		r.cyclic_load_ratios.clear();
 		r.cyclic_measured_drifts.clear();
 	}
-	r.kinetic_j = s.energyLedger.measure().kinetic_j;
+	r.kinetic_j = s.ledger.measure().kinetic_j;
 	for (size_t j = 0; j < s.beam.joints().size(); j++) r.geometric_plastic_work_j += mp * std::fabs(s.jointRotation(j));
 	r.booked_plastic_work_j = s.beam.plasticWork_j();
 	r.energy_balance_error_pct = r.load_work_j > 0 ? 100.0 * (r.load_work_j - r.kinetic_j - r.geometric_plastic_work_j) / r.load_work_j : 0.0;
@@ -240,16 +227,17 @@ CantileverResult CantileverScene::State::result() const
 	return r;
 }
 
-std::vector<scene::JointView> CantileverScene::State::joints() const
+std::vector<scene::JointView> CantileverScene::joints() const
 {
 	std::vector<scene::JointView> views;
-	for (size_t j = 0; j < sites.size(); j++) views.push_back(scene::jointView(sites[j], jointRotation(j)));
+	for (size_t j = 0; j < m->sites.size(); j++) views.push_back(scene::jointView(m->sites[j], m->jointRotation(j)));
 	return views;
 }
 
-scene::SceneLedger CantileverScene::State::ledger() const
+scene::SceneLedger CantileverScene::ledger() const
 {
 	const CantileverResult r = result();
+	const CantileverParameters& p = m->p;
 	scene::SceneLedger l;
 	l.title = std::string("cantilever, ") + plastic::jointMethodName(p.solver.method);
 	l.time_s = r.simulated_s;
@@ -262,7 +250,7 @@ scene::SceneLedger CantileverScene::State::ledger() const
 	l.answer.push_back(line);
 	if (p.ramp_rate_per_s > 0)
 	{
-		std::snprintf(line, sizeof line, "load P L / Mp %.3f", load.factor());
+		std::snprintf(line, sizeof line, "load P L / Mp %.3f", m->load.factor());
 		l.status.push_back(line);
 		if (std::isfinite(r.collapse_ratio))
 		{
@@ -285,13 +273,19 @@ scene::SceneLedger CantileverScene::State::ledger() const
 	return l;
 }
 
-scene::WorldBox CantileverScene::State::viewEnvelope() const
+CantileverResult runCantilever(const CantileverParameters& p) { return scene::runToEnd<CantileverScene>(p); }
+}  // namespace structures
+
+namespace structures
+{
+scene::WorldBox CantileverScene::viewEnvelope() const
 {
 	// The member turns about its root (the origin), the tip down, through the arc its length sweeps: to the analytic
 	// stop of a dead load (and 10 % past it), a little past the collapse under a ramp (held there, the lever shortens as
 	// it turns), all the way round under a follower load above collapse (it never stops).
+	const CantileverParameters& p = m->p;
 	const double pi = 3.14159265358979;
-	const double stop_rad = answer.stop_rotation_rad;
+	const double stop_rad = m->answer.stop_rotation_rad;
 	double turn_rad = pi;
 	if (p.ramp_rate_per_s > 0)
 		turn_rad = 0.3;
@@ -305,11 +299,4 @@ scene::WorldBox CantileverScene::State::viewEnvelope() const
 	box.max_m = btVector3(btScalar(L + pad_m), btScalar(pad_m), btScalar(p.section_width_m));
 	return box;
 }
-
-namespace structures
-{
-CantileverResult runCantilever(const CantileverParameters& p) { return scene::runToEnd<CantileverScene>(p); }
 }  // namespace structures
-
-// the class, once (scene/Scene.h)
-template class scene::Scene<CantileverParameters, CantileverResult>;

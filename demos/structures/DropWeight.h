@@ -8,10 +8,11 @@
 // Mp x (theta + 2 theta + theta) (clamped), theta the rotation of each half.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "scene/Scene.h"
+#include "scene/SteppedScene.h"
 #include "scene/StructureRig.h"
 
 namespace structures
@@ -69,10 +70,25 @@ struct DropWeightResult
 std::vector<std::string> validateDropWeightParameters(const DropWeightParameters& p);
 DropWeightAnswer dropWeightAnswer(const DropWeightParameters& p);
 // The scene, built from its parameters, one internal step at a time (the runner and the browser example both use it).
-// Its State, and the class's one instantiation, are in DropWeightScene.cpp (scene/Scene.h).
-using DropWeightScene = scene::Scene<DropWeightParameters, DropWeightResult>;
-// the ball (the weight)
-const btRigidBody& dropWeightBall(const DropWeightScene& scene);
+class DropWeightScene : public scene::SteppedScene
+{
+public:
+	explicit DropWeightScene(const DropWeightParameters& p);
+	~DropWeightScene() override;
+	void step() override;
+	bool done() const override;
+	double time_s() const override;
+	btDiscreteDynamicsWorld& world() override;
+	std::vector<scene::JointView> joints() const override;
+	scene::SceneLedger ledger() const override;
+	scene::WorldBox viewEnvelope() const override;
+	DropWeightResult result() const;  // measured now
+	const btRigidBody& ball() const;
+
+private:
+	struct State;
+	std::unique_ptr<State> m;
+};
 
 // DropWeightScene stepped until it is done.
 DropWeightResult runDropWeight(const DropWeightParameters& p);

@@ -13,7 +13,6 @@
 #include "scene/JointSites.h"
 #include "scene/Measures.h"
 #include "scene/Errors.h"
-#include "scene/SceneDefinition.h"
 
 namespace structures
 {
@@ -51,12 +50,7 @@ std::unique_ptr<btRigidBody> makeBody(btScalar mass, btCollisionShape& shape, co
 	return std::make_unique<btRigidBody>(info);
 }
 }  // namespace
-}  // namespace structures
 
-// scene::Scene's State (scene/Scene.h) is specialized outside namespace structures; this lets it read structures' names.
-using namespace structures;
-
-template <>
 struct DropWeightScene::State
 {
 	explicit State(const DropWeightParameters& params)
@@ -69,19 +63,7 @@ struct DropWeightScene::State
 		  carriageShape(btVector3(btScalar(p.section_width_m / 2), btScalar(p.section_depth_m / 2), btScalar(p.section_width_m / 2))),
 		  ballShape(btScalar(p.weight_radius_m))
 	{
-		init();
 	}
-	void init();  // once every member is made: the carriage, the supports, the ball, the measures
-
-	// what scene::Scene's members hand on to (scene/SceneDefinition.h)
-	void step();
-	bool done() const;
-	double time_s() const;
-	btDiscreteDynamicsWorld& world();
-	std::vector<scene::JointView> joints() const;
-	scene::SceneLedger ledger() const;
-	scene::WorldBox viewEnvelope() const;
-	DropWeightResult result() const;
 
 	double site(size_t i) const { return angles[i + 1].angle_rad() - angles[i].angle_rad(); }
 	double geometricPlasticWork() const
@@ -116,7 +98,7 @@ struct DropWeightScene::State
 	std::unique_ptr<scene::BodyInWorld> ballInWorld;
 	// the bodies along the beam, site i joins body i and i + 1: the left support, the inner joints, the right support
 	std::vector<scene::PlanarAngle> angles;
-	std::unique_ptr<plastic::EnergyLedger> energyLedger;
+	std::unique_ptr<plastic::EnergyLedger> ledger;
 	std::vector<scene::JointSite> sites;   // the plastic joints
 	std::vector<size_t> siteIndex;  // their sites in angles
 	size_t mid = 0;
@@ -127,9 +109,9 @@ struct DropWeightScene::State
 	bool finite = true;
 };
 
-void DropWeightScene::State::init()
+DropWeightScene::DropWeightScene(const DropWeightParameters& p) : m(std::make_unique<State>(p))
 {
-	State& s = *this;
+	State& s = *m;
 	const std::vector<btRigidBody*>& segments = s.beam.segments();
 	s.carriage = makeBody(segments.front()->getMass(), s.carriageShape, btTransform(btMatrix3x3::getIdentity(), s.rightEnd));
 	s.carriage->setActivationState(DISABLE_DEACTIVATION);
@@ -174,10 +156,10 @@ void DropWeightScene::State::init()
 	s.angles.emplace_back(nullptr);
 	for (btRigidBody* b : segments) s.angles.emplace_back(b);
 	s.angles.emplace_back(s.carriage.get());
-	s.energyLedger = std::make_unique<plastic::EnergyLedger>(btVector3(0, 0, 0));
-	for (btRigidBody* b : segments) s.energyLedger->addBody(*b);
-	s.energyLedger->addBody(*s.carriage);
-	s.energyLedger->addBody(*s.ball);
+	s.ledger = std::make_unique<plastic::EnergyLedger>(btVector3(0, 0, 0));
+	for (btRigidBody* b : segments) s.ledger->addBody(*b);
+	s.ledger->addBody(*s.carriage);
+	s.ledger->addBody(*s.ball);
 	// the plastic joints: the beam's (with the left clamp first when clamped), then the right clamp
 	const size_t first = p.clamped ? 0 : 1;  // site of the beam's first joint
 	for (size_t j = 0; j < s.beam.joints().size(); j++)
@@ -195,7 +177,7 @@ void DropWeightScene::State::init()
 	s.mid = size_t(p.segments / 2);
 	s.midLocal = btVector3(0, 0, btScalar(s.beam.segmentLength_m() / 2));
 
-	State* state = this;
+	State* state = m.get();
 	s.rig.beforeEachStep([state](double step_s)
 						 {
 		state->beam.updateForStep(step_s);
@@ -205,16 +187,19 @@ void DropWeightScene::State::init()
 		for (scene::PlanarAngle& a : state->angles) a.update(); });
 }
 
-bool DropWeightScene::State::done() const { return finished || rig.time_s() >= p.duration_s - 1e-12; }
-double DropWeightScene::State::time_s() const { return rig.time_s(); }
-btDiscreteDynamicsWorld& DropWeightScene::State::world() { return rig.world(); }
+DropWeightScene::~DropWeightScene() = default;
 
-void DropWeightScene::State::step()
+bool DropWeightScene::done() const { return m->finished || m->rig.time_s() >= m->p.duration_s - 1e-12; }
+double DropWeightScene::time_s() const { return m->rig.time_s(); }
+btDiscreteDynamicsWorld& DropWeightScene::world() { return m->rig.world(); }
+const btRigidBody& DropWeightScene::ball() const { return *m->ball; }
+
+void DropWeightScene::step()
 {
-	State& s = *this;
+	State& s = *m;
 	if (done()) return;
 	s.rig.step();
-	const double kinetic = s.energyLedger->measure().kinetic_j;
+	const double kinetic = s.ledger->measure().kinetic_j;
 	if (!std::isfinite(kinetic))
 	{
 		s.finite = false;
@@ -234,9 +219,9 @@ void DropWeightScene::State::step()
 		s.finished = true;
 }
 
-DropWeightResult DropWeightScene::State::result() const
+DropWeightResult DropWeightScene::result() const
 {
-	const State& s = *this;
+	const State& s = *m;
 	DropWeightResult r;
 	r.answer = s.answer;
 	r.finite = s.finite;
@@ -247,7 +232,7 @@ DropWeightResult DropWeightScene::State::result() const
 	r.right_support_rotation_rad = -s.site(sites - 1);
 	for (size_t i = 1; i + 1 < sites; i++)
 		if (i != s.mid) r.max_inner_rotation_rad = std::max(r.max_inner_rotation_rad, std::fabs(s.site(i)));
-	r.kinetic_end_j = s.energyLedger->measure().kinetic_j;
+	r.kinetic_end_j = s.ledger->measure().kinetic_j;
 	r.geometric_plastic_work_j = s.geometricPlasticWork();
 	r.booked_plastic_work_j = s.beam.plasticWork_j() + s.rightClamp.plasticWork_j();
 	const DropWeightAnswer& a = r.answer;
@@ -261,19 +246,19 @@ DropWeightResult DropWeightScene::State::result() const
 	return r;
 }
 
-std::vector<scene::JointView> DropWeightScene::State::joints() const
+std::vector<scene::JointView> DropWeightScene::joints() const
 {
 	std::vector<scene::JointView> views;
-	for (size_t i = 0; i < sites.size(); i++) views.push_back(scene::jointView(sites[i], site(siteIndex[i])));
+	for (size_t i = 0; i < m->sites.size(); i++) views.push_back(scene::jointView(m->sites[i], m->site(m->siteIndex[i])));
 	return views;
 }
 
-scene::SceneLedger DropWeightScene::State::ledger() const
+scene::SceneLedger DropWeightScene::ledger() const
 {
 	const DropWeightResult r = result();
 	const DropWeightAnswer& a = r.answer;
 	scene::SceneLedger l;
-	l.title = std::string("drop weight, ") + (p.clamped ? "clamped, " : "simply supported, ") + plastic::jointMethodName(p.solver.method);
+	l.title = std::string("drop weight, ") + (m->p.clamped ? "clamped, " : "simply supported, ") + plastic::jointMethodName(m->p.solver.method);
 	l.time_s = r.simulated_s;
 	l.load_work_j = a.initial_kinetic_j;  // the ball's kinetic energy is the load
 	l.kinetic_j = r.kinetic_end_j;
@@ -293,25 +278,22 @@ scene::SceneLedger DropWeightScene::State::ledger() const
 	return l;
 }
 
-scene::WorldBox DropWeightScene::State::viewEnvelope() const
+DropWeightResult runDropWeight(const DropWeightParameters& p) { return scene::runToEnd<DropWeightScene>(p); }
+}  // namespace structures
+
+namespace structures
+{
+scene::WorldBox DropWeightScene::viewEnvelope() const
 {
 	// The beam (0..L along x), the weight on its top face at mid-span, and the mechanism: the halves turn by the
 	// analytic half rotation (half as much again, for the estimate's error) and the middle goes down L/2 sin of it.
+	const DropWeightParameters& p = m->p;
 	const double pi = 3.14159265358979;
-	const double theta_rad = std::min(pi / 2, 1.5 * answer.half_rotation_rad + 0.05);
+	const double theta_rad = std::min(pi / 2, 1.5 * m->answer.half_rotation_rad + 0.05);
 	const double pad_m = p.section_depth_m;
 	scene::WorldBox box;
 	box.min_m = btVector3(btScalar(-pad_m), btScalar(-p.span_m / 2 * std::sin(theta_rad) - pad_m), btScalar(-p.section_width_m));
 	box.max_m = btVector3(btScalar(p.span_m + pad_m), btScalar(pad_m + 2 * p.weight_radius_m), btScalar(p.section_width_m));
 	return box;
 }
-
-namespace structures
-{
-const btRigidBody& dropWeightBall(const DropWeightScene& scene) { return *scene.state().ball; }
-
-DropWeightResult runDropWeight(const DropWeightParameters& p) { return scene::runToEnd<DropWeightScene>(p); }
 }  // namespace structures
-
-// the class, once (scene/Scene.h)
-template class scene::Scene<DropWeightParameters, DropWeightResult>;

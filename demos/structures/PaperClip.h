@@ -6,11 +6,12 @@
 // the time the damage reaches 1 (cycles = that time / T). A joint with an elastic range flows less and lasts longer.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "plastic/JointFactory.h"
-#include "scene/Scene.h"
+#include "scene/SteppedScene.h"
 #include "scene/StructureRig.h"
 
 namespace structures
@@ -76,8 +77,24 @@ PaperClipAnswer paperClipAnswer(const PaperClipParameters& p);
 // the wire's joint (the toolkit's spec: round bar, the method, fatigue) at the vise, bending about z
 plastic::JointSpec paperClipJointSpec(const PaperClipParameters& p);
 
-// Its State, and the class's one instantiation, are in PaperClipScene.cpp (scene/Scene.h).
-using PaperClipScene = scene::Scene<PaperClipParameters, PaperClipResult>;
+class PaperClipScene : public scene::SteppedScene
+{
+public:
+	explicit PaperClipScene(const PaperClipParameters& p);
+	~PaperClipScene() override;
+	void step() override;
+	bool done() const override;
+	double time_s() const override;
+	btDiscreteDynamicsWorld& world() override;
+	std::vector<scene::JointView> joints() const override;
+	scene::SceneLedger ledger() const override;
+	scene::WorldBox viewEnvelope() const override;
+	PaperClipResult result() const;
+
+private:
+	struct State;
+	std::unique_ptr<State> m;
+};
 
 PaperClipResult runPaperClip(const PaperClipParameters& p);
 }  // namespace structures

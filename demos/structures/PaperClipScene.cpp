@@ -9,7 +9,6 @@
 #include "plastic/EnergyLedger.h"
 #include "scene/Errors.h"
 #include "scene/JointSites.h"
-#include "scene/SceneDefinition.h"
 
 namespace structures
 {
@@ -17,12 +16,7 @@ namespace
 {
 const double kPi = 3.14159265358979323846;
 }
-}  // namespace structures
 
-// scene::Scene's State (scene/Scene.h) is specialized outside namespace structures; this lets it read structures' names.
-using namespace structures;
-
-template <>
 struct PaperClipScene::State
 {
 	explicit State(const PaperClipParameters& params)
@@ -33,20 +27,7 @@ struct PaperClipScene::State
 		  legShape(btVector3(btScalar(p.leg_length_m / 2), btScalar(p.wire_diameter_m / 2), btScalar(p.wire_diameter_m / 2))),
 		  handShape(btVector3(btScalar(p.wire_diameter_m), btScalar(p.wire_diameter_m), btScalar(p.wire_diameter_m)))
 	{
-		init();
 	}
-	void init();  // once every member is made: the leg, the hand and its lock, the joint, the step's drive
-
-	// what scene::Scene's members hand on to (scene/SceneDefinition.h)
-	void step();
-	bool done() const;
-	double time_s() const;
-	btDiscreteDynamicsWorld& world();
-	std::vector<scene::JointView> joints() const;
-	scene::SceneLedger ledger() const;
-	scene::WorldBox viewEnvelope() const;
-	PaperClipResult result() const;
-
 	double drivenAngle(double t) const { return p.bend_amplitude_rad * std::sin(2 * kPi * t / p.cycle_period_s); }
 	double legAngle() const
 	{
@@ -69,15 +50,15 @@ struct PaperClipScene::State
 	std::unique_ptr<scene::BodyInWorld> legInWorld, handInWorld;
 	std::unique_ptr<scene::ConstraintInWorld> jointInWorld, lockInWorld;
 	scene::JointSite site;
-	plastic::EnergyLedger energyLedger{btVector3(0, 0, 0)};  // the leg's kinetic energy
+	plastic::EnergyLedger ledger{btVector3(0, 0, 0)};  // the leg's kinetic energy
 	PaperClipResult r;
 	double startKinetic_j = 0;
 	bool finished = false;
 };
 
-void PaperClipScene::State::init()
+PaperClipScene::PaperClipScene(const PaperClipParameters& p) : m(std::make_unique<State>(p))
 {
-	State& s = *this;
+	State& s = *m;
 	const double r = p.wire_diameter_m / 2;
 	const double mass_kg = p.density_kg_m3 * kPi * r * r * p.leg_length_m;
 	btVector3 inertia(0, 0, 0);
@@ -112,12 +93,12 @@ void PaperClipScene::State::init()
 	const double spin = 2 * kPi * p.bend_amplitude_rad / p.cycle_period_s;
 	s.leg->setAngularVelocity(btVector3(0, 0, btScalar(spin)));
 	s.leg->setLinearVelocity(btVector3(0, btScalar(spin * p.leg_length_m / 2), 0));
-	s.energyLedger.addBody(*s.leg);
-	s.startKinetic_j = s.energyLedger.measure().kinetic_j;
+	s.ledger.addBody(*s.leg);
+	s.startKinetic_j = s.ledger.measure().kinetic_j;
 	s.r.answer = s.answer;
 	s.r.break_time_s = std::numeric_limits<double>::quiet_NaN();
 	s.r.cycles_to_break = std::numeric_limits<double>::quiet_NaN();
-	State* state = this;
+	State* state = m.get();
 	s.rig.beforeEachStep([state](double step_s)
 						 {
 		plastic::updateJointForStep(*state->joint.constraint, state->spec, step_s);
@@ -142,20 +123,22 @@ void PaperClipScene::State::init()
 		s.r.hysteresis.push_back({t, rotation, moment}); });
 }
 
-void PaperClipScene::State::step()
+PaperClipScene::~PaperClipScene() = default;
+
+void PaperClipScene::step()
 {
-	if (finished) return;
-	rig.step();
-	if (!r.finite || rig.time_s() >= p.duration_s - 0.5 * rig.step_s()) finished = true;
+	if (m->finished) return;
+	m->rig.step();
+	if (!m->r.finite || m->rig.time_s() >= m->p.duration_s - 0.5 * m->rig.step_s()) m->finished = true;
 }
 
-bool PaperClipScene::State::done() const { return finished; }
-double PaperClipScene::State::time_s() const { return rig.time_s(); }
-btDiscreteDynamicsWorld& PaperClipScene::State::world() { return rig.world(); }
+bool PaperClipScene::done() const { return m->finished; }
+double PaperClipScene::time_s() const { return m->rig.time_s(); }
+btDiscreteDynamicsWorld& PaperClipScene::world() { return m->rig.world(); }
 
-PaperClipResult PaperClipScene::State::result() const
+PaperClipResult PaperClipScene::result() const
 {
-	const State& s = *this;
+	const State& s = *m;
 	PaperClipResult r = s.r;
 	if (s.joint.plasticState)
 	{
@@ -165,7 +148,7 @@ PaperClipResult PaperClipScene::State::result() const
 	r.plastic_work_j = s.joint.plasticWork_j();
 	r.elastic_j = s.joint.elasticEnergy_j();
 	r.start_kinetic_j = s.startKinetic_j;
-	r.kinetic_j = s.energyLedger.measure().kinetic_j;
+	r.kinetic_j = s.ledger.measure().kinetic_j;
 	r.energy_balance_error_pct =
 		r.hand_work_j > 0 ? 100 * (r.hand_work_j - r.plastic_work_j - r.elastic_j - (r.kinetic_j - r.start_kinetic_j)) / r.hand_work_j : 0.0;
 	r.steps = s.rig.steps();
@@ -173,13 +156,13 @@ PaperClipResult PaperClipScene::State::result() const
 	return r;
 }
 
-std::vector<scene::JointView> PaperClipScene::State::joints() const { return {scene::jointView(site, legAngle())}; }
+std::vector<scene::JointView> PaperClipScene::joints() const { return {scene::jointView(m->site, m->legAngle())}; }
 
-scene::SceneLedger PaperClipScene::State::ledger() const
+scene::SceneLedger PaperClipScene::ledger() const
 {
 	const PaperClipResult r = result();
 	scene::SceneLedger l;
-	l.title = std::string("paper clip, ") + plastic::jointMethodName(p.solver.method);
+	l.title = std::string("paper clip, ") + plastic::jointMethodName(m->p.solver.method);
 	l.time_s = r.simulated_s;
 	// the energy in: the hand's work and the leg's kinetic energy at the start
 	l.load_work_j = r.hand_work_j + r.start_kinetic_j;
@@ -189,7 +172,7 @@ scene::SceneLedger PaperClipScene::State::ledger() const
 	char line[160];
 	std::snprintf(line, sizeof line, "Coffin-Manson: %.2f cycles", r.answer.cycles_to_break);
 	l.answer.push_back(line);
-	std::snprintf(line, sizeof line, "cycles %.2f, fatigue damage %.3f", r.simulated_s / p.cycle_period_s, r.fatigue_damage);
+	std::snprintf(line, sizeof line, "cycles %.2f, fatigue damage %.3f", r.simulated_s / m->p.cycle_period_s, r.fatigue_damage);
 	l.status.push_back(line);
 	if (r.broken)
 	{
@@ -199,9 +182,10 @@ scene::SceneLedger PaperClipScene::State::ledger() const
 	return l;
 }
 
-scene::WorldBox PaperClipScene::State::viewEnvelope() const
+scene::WorldBox PaperClipScene::viewEnvelope() const
 {
 	// the leg sweeps +-A about the vise
+	const PaperClipParameters& p = m->p;
 	const double L = p.leg_length_m, pad = 4 * p.wire_diameter_m;
 	const double reach = L * std::sin(p.bend_amplitude_rad);
 	scene::WorldBox box;
@@ -210,10 +194,6 @@ scene::WorldBox PaperClipScene::State::viewEnvelope() const
 	return box;
 }
 
-namespace structures
-{
 PaperClipResult runPaperClip(const PaperClipParameters& p) { return scene::runToEnd<PaperClipScene>(p); }
-}  // namespace structures
 
-// the class, once (scene/Scene.h)
-template class scene::Scene<PaperClipParameters, PaperClipResult>;
+}  // namespace structures

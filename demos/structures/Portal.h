@@ -6,10 +6,11 @@
 // independent mechanisms, computed from the parameters.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
-#include "scene/Scene.h"
+#include "scene/SteppedScene.h"
 #include "scene/StructureRig.h"
 
 namespace structures
@@ -111,8 +112,24 @@ struct PortalResult
 std::vector<std::string> validatePortalParameters(const PortalParameters& p);
 PortalAnswer portalAnswer(const PortalParameters& p);
 // The scene, built from its parameters, one internal step at a time (the runner and the browser example both use it).
-// Its State, and the class's one instantiation, are in PortalScene.cpp (scene/Scene.h).
-using PortalScene = scene::Scene<PortalParameters, PortalResult>;
+class PortalScene : public scene::SteppedScene
+{
+public:
+	explicit PortalScene(const PortalParameters& p);
+	~PortalScene() override;
+	void step() override;
+	bool done() const override;
+	double time_s() const override;
+	btDiscreteDynamicsWorld& world() override;
+	std::vector<scene::JointView> joints() const override;
+	scene::SceneLedger ledger() const override;
+	scene::WorldBox viewEnvelope() const override;
+	PortalResult result() const;  // measured now
+
+private:
+	struct State;
+	std::unique_ptr<State> m;
+};
 
 // PortalScene stepped until it is done.
 PortalResult runPortal(const PortalParameters& p);

@@ -16,7 +16,6 @@
 #include "Portal.h"
 #include "scene/DriftActuator.h"
 #include "scene/Errors.h"
-#include "scene/SceneDefinition.h"
 
 namespace structures
 {
@@ -38,12 +37,7 @@ plastic::BeamSpec memberSpec(const PortalParameters& p, const btVector3& start, 
 	return spec;
 }
 }  // namespace
-}  // namespace structures
 
-// scene::Scene's State (scene/Scene.h) is specialized outside namespace structures; this lets it read structures' names.
-using namespace structures;
-
-template <>
 struct PortalScene::State
 {
 	explicit State(const PortalParameters& params)
@@ -73,21 +67,9 @@ struct PortalScene::State
 				   actuatorStiffness(p, columnLeft), 2.0 * std::sqrt(actuatorStiffness(p, columnLeft) * kneeMass_kg(columnLeft))),
 		  test({p.ramp_rate_per_s, p.fast_ramp_rate_per_s, p.slow_from_fraction * answer.collapse_factor, p.collapse_rate_rad_s, p.rate_window_s,
 				p.mechanism_rotation_rad, p.hold_s}),
-		  energyLedger(btVector3(0, 0, 0))
+		  ledger(btVector3(0, 0, 0))
 	{
-		init();
 	}
-	void init();  // once every member is made: the frame's path, its joints' sites, the step's loads
-
-	// what scene::Scene's members hand on to (scene/SceneDefinition.h)
-	void step();
-	bool done() const;
-	double time_s() const;
-	btDiscreteDynamicsWorld& world();
-	std::vector<scene::JointView> joints() const;
-	scene::SceneLedger ledger() const;
-	scene::WorldBox viewEnvelope() const;
-	PortalResult result() const;
 
 	static plastic::JointSpec baseOf(const plastic::Beam& columnRight, btScalar L)
 	{
@@ -138,10 +120,10 @@ struct PortalScene::State
 	plastic::PointLoad kneeLeft, kneeRight;  // gravity
 	scene::DriftActuator actuator;           // the sway pushover's, at the left knee along x
 	CollapseTest test;
-	plastic::EnergyLedger energyLedger;
+	plastic::EnergyLedger ledger;
 	std::vector<const btRigidBody*> path;  // the bodies in order along the frame, the ground at both ends
 	std::vector<scene::PlanarAngle> angles;
-	std::vector<const plastic::Joint*> frameJoints;  // site i joins body i and body i + 1
+	std::vector<const plastic::Joint*> joints;  // site i joins body i and body i + 1
 	std::vector<scene::JointSite> sites;
 	bool finished = false;
 	bool finite = true;
@@ -150,9 +132,9 @@ struct PortalScene::State
 	std::vector<double> atThird;    // the rotations a third into the run: what they change by after it is creep
 };
 
-void PortalScene::State::init()
+PortalScene::PortalScene(const PortalParameters& p) : m(std::make_unique<State>(p))
 {
-	State& s = *this;
+	State& s = *m;
 	s.path = {nullptr};
 	for (const plastic::Beam* member : {&s.columnLeft, &s.beam, &s.columnRight})
 		for (btRigidBody* b : member->segments())
@@ -166,22 +148,22 @@ void PortalScene::State::init()
 	for (const plastic::Beam* member : {&s.columnLeft, &s.beam, &s.columnRight})
 		for (size_t j = 0; j < member->joints().size(); j++)
 		{
-			s.frameJoints.push_back(&member->joints()[j]);
+			s.joints.push_back(&member->joints()[j]);
 			pivots.push_back(member->jointSpecs()[j].pivot_m);
 		}
-	s.frameJoints.push_back(&s.base);
+	s.joints.push_back(&s.base);
 	pivots.push_back(s.baseSpec.pivot_m);
-	for (size_t i = 0; i < s.frameJoints.size(); i++)
+	for (size_t i = 0; i < s.joints.size(); i++)
 	{
 		// site i joins path[i] and path[i + 1]; the last one (the right base) joins the last segment and the ground
 		const btRigidBody* a = s.path[i];
 		const btRigidBody* b = s.path[i + 1] ? s.path[i + 1] : s.path[i];
 		if (!s.path[i + 1]) a = nullptr;
-		s.sites.push_back(scene::jointSite(*s.frameJoints[i], a, *b, pivots[i]));
+		s.sites.push_back(scene::jointSite(*s.joints[i], a, *b, pivots[i]));
 	}
-	for (size_t i = 1; i + 1 < s.path.size(); i++) s.energyLedger.addBody(*s.path[i]);
+	for (size_t i = 1; i + 1 < s.path.size(); i++) s.ledger.addBody(*s.path[i]);
 	s.ramp = p.ramp_rate_per_s > 0 && !s.pushover();
-	State* state = this;
+	State* state = m.get();
 	s.rig.beforeEachStep([state](double step_s)
 						 {
 		const double t = state->rig.time_s();
@@ -211,17 +193,19 @@ void PortalScene::State::init()
 		for (scene::PlanarAngle& a : state->angles) a.update(); });
 }
 
-bool PortalScene::State::done() const
-{
-	const double end_s = pushover() ? std::min(p.duration_s, actuator.end_s() + p.settle_s) : p.duration_s;
-	return finished || rig.time_s() >= end_s - 1e-12;
-}
-double PortalScene::State::time_s() const { return rig.time_s(); }
-btDiscreteDynamicsWorld& PortalScene::State::world() { return rig.world(); }
+PortalScene::~PortalScene() = default;
 
-void PortalScene::State::step()
+bool PortalScene::done() const
 {
-	State& s = *this;
+	const double end_s = m->pushover() ? std::min(m->p.duration_s, m->actuator.end_s() + m->p.settle_s) : m->p.duration_s;
+	return m->finished || m->rig.time_s() >= end_s - 1e-12;
+}
+double PortalScene::time_s() const { return m->rig.time_s(); }
+btDiscreteDynamicsWorld& PortalScene::world() { return m->rig.world(); }
+
+void PortalScene::step()
+{
+	State& s = *m;
 	if (done()) return;
 	s.rig.step();
 	const std::vector<double> now = s.rotations();
@@ -239,9 +223,9 @@ void PortalScene::State::step()
 	if (s.test.done()) s.finished = true;
 }
 
-PortalResult PortalScene::State::result() const
+PortalResult PortalScene::result() const
 {
-	const State& s = *this;
+	const State& s = *m;
 	PortalResult r;
 	r.answer = s.answer;
 	const double mp = s.answer.plastic_moment_nm;
@@ -262,8 +246,8 @@ PortalResult PortalScene::State::result() const
 		for (double force_n : s.actuator.meanForces_n()) r.sway_load_ratios.push_back(force_n * s.p.height_m / (4 * mp));
 		for (double d : r.sway_measured_drifts) r.second_order_load_ratios.push_back(swaySecondOrderRatio(s.p, d));
 	}
-	r.kinetic_j = s.energyLedger.measure().kinetic_j;
-	for (const plastic::Joint* j : s.frameJoints) r.booked_plastic_work_j += j->plasticWork_j();
+	r.kinetic_j = s.ledger.measure().kinetic_j;
+	for (const plastic::Joint* j : s.joints) r.booked_plastic_work_j += j->plasticWork_j();
 	for (double x : r.rotations_rad) r.geometric_plastic_work_j += mp * std::fabs(x);
 	r.solver_fallbacks = s.rig.solverFallbacks();
 	r.steps = s.rig.steps();
@@ -272,20 +256,20 @@ PortalResult PortalScene::State::result() const
 	return r;
 }
 
-std::vector<scene::JointView> PortalScene::State::joints() const
+std::vector<scene::JointView> PortalScene::joints() const
 {
-	const std::vector<double> rotations = this->rotations();
+	const std::vector<double> rotations = m->rotations();
 	std::vector<scene::JointView> views;
-	for (size_t i = 0; i < sites.size(); i++) views.push_back(scene::jointView(sites[i], rotations[i]));
+	for (size_t i = 0; i < m->sites.size(); i++) views.push_back(scene::jointView(m->sites[i], rotations[i]));
 	return views;
 }
 
-scene::SceneLedger PortalScene::State::ledger() const
+scene::SceneLedger PortalScene::ledger() const
 {
 	const PortalResult r = result();
 	const PortalAnswer& a = r.answer;
 	scene::SceneLedger l;
-	l.title = std::string("portal frame, ") + plastic::jointMethodName(p.solver.method);
+	l.title = std::string("portal frame, ") + plastic::jointMethodName(m->p.solver.method);
 	l.time_s = r.simulated_s;
 	l.load_work_j = r.load_work_j;
 	l.kinetic_j = r.kinetic_j;
@@ -296,15 +280,15 @@ scene::SceneLedger PortalScene::State::ledger() const
 	l.answer.push_back(line);
 	std::snprintf(line, sizeof line, "collapse factor %.3f (%s)", a.collapse_factor, a.mechanism.c_str());
 	l.answer.push_back(line);
-	if (pushover())
+	if (m->pushover())
 	{
-		std::snprintf(line, sizeof line, "sway drift %.4f, H h / 4 Mp %.3f", actuator.drift(), actuator.force_n() * p.height_m / (4 * a.plastic_moment_nm));
+		std::snprintf(line, sizeof line, "sway drift %.4f, H h / 4 Mp %.3f", m->actuator.drift(), m->actuator.force_n() * m->p.height_m / (4 * a.plastic_moment_nm));
 		l.status.push_back(line);
-		std::snprintf(line, sizeof line, "rigid-plastic, second order: %.3f", swaySecondOrderRatio(p, actuator.drift()));
+		std::snprintf(line, sizeof line, "rigid-plastic, second order: %.3f", swaySecondOrderRatio(m->p, m->actuator.drift()));
 		l.answer.push_back(line);
 		return l;
 	}
-	std::snprintf(line, sizeof line, "load factor %.3f", test.factor());
+	std::snprintf(line, sizeof line, "load factor %.3f", m->test.factor());
 	l.status.push_back(line);
 	if (std::isfinite(r.collapse_factor))
 	{
@@ -315,10 +299,16 @@ scene::SceneLedger PortalScene::State::ledger() const
 	return l;
 }
 
-scene::WorldBox PortalScene::State::viewEnvelope() const
+PortalResult runPortal(const PortalParameters& p) { return scene::runToEnd<PortalScene>(p); }
+}  // namespace structures
+
+namespace structures
+{
+scene::WorldBox PortalScene::viewEnvelope() const
 {
 	// The frame (columns 0..h at x = 0 and L, the beam at h) and its mechanism: the columns sway and the beam sags by
 	// turns of a few mechanism rotations (the run holds the load once the collapse is seen and stops soon after).
+	const PortalParameters& p = m->p;
 	double turn_rad = std::max(0.2, 4 * p.mechanism_rotation_rad);
 	for (double d : p.sway_drifts) turn_rad = std::max(turn_rad, std::fabs(d) + 0.05);
 	const double pad_m = p.section_depth_m;
@@ -327,11 +317,4 @@ scene::WorldBox PortalScene::State::viewEnvelope() const
 	box.max_m = btVector3(btScalar(p.span_m + turn_rad * p.height_m + pad_m), btScalar(p.height_m + pad_m), btScalar(p.section_width_m));
 	return box;
 }
-
-namespace structures
-{
-PortalResult runPortal(const PortalParameters& p) { return scene::runToEnd<PortalScene>(p); }
 }  // namespace structures
-
-// the class, once (scene/Scene.h)
-template class scene::Scene<PortalParameters, PortalResult>;
