@@ -13,6 +13,7 @@
 #include "scene/JointSites.h"
 #include "scene/Measures.h"
 #include "Pendulum.h"
+#include "SteelFrame.h"
 #include "scene/StructureRig.h"
 #include "WreckingBall.h"
 #include "scene/Errors.h"
@@ -29,27 +30,26 @@ std::unique_ptr<btRigidBody> makeBody(double mass_kg, btCollisionShape& shape, c
 	info.m_startWorldTransform = at;
 	return std::make_unique<btRigidBody>(info);
 }
-
-// the frame's bodies: they collide with the ball and the ground, not with each other
-const int kFrameGroup = 1 << 6;
 }  // namespace
 
 struct WreckingBallScene::State
 {
 	explicit State(const WreckingBallParameters& params) : p(params), estimate(wreckingBallEstimate(p)), structure(p.solver), ledger(btVector3(0, btScalar(-p.gravity_m_s2), 0)), swing(btVector3(0, btScalar(-p.gravity_m_s2), 0)) {}
 
-	plastic::BeamSpec memberSpec(const btVector3& start, const btVector3& end, int segments) const
+	SteelFrameSpec frameSpec() const
 	{
-		plastic::BeamSpec spec;
+		SteelFrameSpec spec;
 		spec.may_sleep = false;  // as the figures were made (the frame would sleep until the ball wakes it)
-		spec.start_m = start;
-		spec.end_m = end;
-		spec.segments = segments;
+		spec.storeys = p.storeys;
+		spec.bays = p.bays;
+		spec.span_m = p.span_m;
+		spec.height_m = p.height_m;
+		spec.column_segments = p.column_segments;
+		spec.beam_segments = p.beam_segments;
 		spec.joint.section = plastic::iSection(p.section_depth_m, p.flange_width_m, p.web_thickness_m, p.flange_thickness_m);
 		spec.joint.material.yield_stress_pa = p.yield_stress_pa;
 		spec.joint.material.youngs_modulus_pa = p.youngs_modulus_pa;
 		spec.joint.material.density_kg_m3 = p.density_kg_m3;
-		spec.bending_axis = btVector3(0, 0, 1);
 		spec.joint.method = p.method;
 		spec.joint.max_plastic_rotation_rad = p.max_plastic_rotation_rad;
 		return spec;
@@ -69,12 +69,7 @@ struct WreckingBallScene::State
 	// the ground: a static slab whose top is y = 0, under the whole frame
 	std::unique_ptr<btBoxShape> groundShape;
 	std::unique_ptr<btRigidBody> ground;
-	// columns[c][k]: column line c (x = c span), storey k, from its foot up; beams[k][b]: floor k + 1, bay b, left to
-	// right, with its end joint to the right column's node (the top segment of that column's storey)
-	std::vector<std::vector<std::unique_ptr<plastic::Beam>>> columns;
-	std::vector<std::vector<std::unique_ptr<plastic::Beam>>> beams;
-	std::vector<plastic::JointSpec> endSpecs;
-	std::vector<plastic::Joint> endJoints;
+	std::unique_ptr<SteelFrame> steel;  // the frame's members and joints
 	std::vector<const plastic::Joint*> joints;  // one storey and bay: along the frame, base-left .. base-right
 	std::vector<std::string> names;
 	std::vector<scene::JointSite> sites;
@@ -170,49 +165,28 @@ WreckingBallScene::WreckingBallScene(const WreckingBallParameters& p)
 			frame.push_back({&member.joints()[j], a, member.segments()[j], member.jointSpecs()[j].pivot_m, prefix + "-" + std::to_string(j)});
 		}
 	};
-	s.columns.resize(size_t(lines));
-	s.beams.resize(size_t(p.storeys));
-	s.endSpecs.reserve(size_t(p.storeys * p.bays));
-	s.endJoints.reserve(size_t(p.storeys * p.bays));
+	for (const plastic::BeamSpec& member : {SteelFrame::memberSpec(s.frameSpec(), btVector3(0, 0, 0), btVector3(0, h, 0), p.column_segments),
+											 SteelFrame::memberSpec(s.frameSpec(), btVector3(0, h, 0), btVector3(L, h, 0), p.beam_segments)})
+		scene::requireValid(member);
+	s.steel = std::make_unique<SteelFrame>(world, s.frameSpec(), *s.ground, p.solver.internal_step_s);
+	const SteelFrame& steel = *s.steel;
 	for (int k = 0; k < p.storeys; k++)
 	{
 		for (int c = 0; c < lines; c++)
 		{
-			btRigidBody* support = k == 0 ? s.ground.get() : s.columns[size_t(c)][size_t(k - 1)]->segments().back();
-			s.columns[size_t(c)].push_back(std::make_unique<plastic::Beam>(world, scene::requireValid(s.memberSpec(btVector3(L * btScalar(c), h * btScalar(k), 0), btVector3(L * btScalar(c), h * btScalar(k + 1), 0), p.column_segments)), support));
-			addMember(*s.columns[size_t(c)].back(), k == 0 ? nullptr : support, "column-" + std::to_string(c) + "-" + std::to_string(k + 1));
+			const btRigidBody* support = k == 0 ? nullptr : steel.columns()[size_t(c)][size_t(k - 1)]->segments().back();
+			addMember(*steel.columns()[size_t(c)][size_t(k)], support, "column-" + std::to_string(c) + "-" + std::to_string(k + 1));
 		}
 		for (int b = 0; b < p.bays; b++)
 		{
-			btRigidBody* left = s.columns[size_t(b)][size_t(k)]->segments().back();
-			btRigidBody* right = s.columns[size_t(b + 1)][size_t(k)]->segments().back();
-			const btVector3 end(L * btScalar(b + 1), h * btScalar(k + 1), 0);
-			s.beams[size_t(k)].push_back(std::make_unique<plastic::Beam>(world, scene::requireValid(s.memberSpec(btVector3(L * btScalar(b), h * btScalar(k + 1), 0), end, p.beam_segments)), left));
-			const plastic::Beam& beam = *s.beams[size_t(k)].back();
+			const btRigidBody* left = steel.columns()[size_t(b)][size_t(k)]->segments().back();
+			const btRigidBody* right = steel.columns()[size_t(b + 1)][size_t(k)]->segments().back();
+			const plastic::Beam& beam = *steel.beams()[size_t(k)][size_t(b)];
 			const std::string prefix = "beam-" + std::to_string(k + 1) + "-" + std::to_string(b + 1);
 			addMember(beam, left, prefix);
-			plastic::JointSpec spec = beam.jointSpecs().back();
-			spec.pivot_m = end;
-			s.endSpecs.push_back(spec);
-			s.endJoints.push_back(plastic::makeJoint(scene::requireValid(spec), *beam.segments().back(), *right));
-			world.addConstraint(s.endJoints.back().constraint.get(), true);
-			frame.push_back({&s.endJoints.back(), beam.segments().back(), right, end, prefix + "-end"});
+			frame.push_back({&steel.endJoints()[size_t(k * p.bays + b)], beam.segments().back(), right, btVector3(L * btScalar(b + 1), h * btScalar(k + 1), 0), prefix + "-end"});
 		}
 	}
-	// every member once: its joints follow the step, and the frame does not collide with itself (the members meet at
-	// the nodes, where segments of members that are not joined overlap; the ball and the ground still collide with it)
-	for (const auto& group : {&s.columns, &s.beams})
-		for (const auto& row : *group)
-			for (const auto& member : row)
-			{
-				for (size_t j = 0; j < member->joints().size(); j++) plastic::updateJointForStep(*member->joints()[j].constraint, member->jointSpecs()[j], p.solver.internal_step_s);
-				for (btRigidBody* body : member->segments())
-				{
-					world.removeRigidBody(body);
-					world.addRigidBody(body, kFrameGroup, btBroadphaseProxy::AllFilter & ~kFrameGroup);
-				}
-			}
-	for (size_t i = 0; i < s.endJoints.size(); i++) plastic::updateJointForStep(*s.endJoints[i].constraint, s.endSpecs[i], p.solver.internal_step_s);
 
 	if (portal)
 	{
@@ -300,12 +274,7 @@ WreckingBallScene::~WreckingBallScene()
 	btDiscreteDynamicsWorld& world = s.structure.world();
 	world.setInternalTickCallback(nullptr);
 	s.pendulum.reset();
-	for (plastic::Joint& j : s.endJoints) world.removeConstraint(j.constraint.get());
-	s.endJoints.clear();
-	for (auto floor = s.beams.rbegin(); floor != s.beams.rend(); ++floor)
-		while (!floor->empty()) floor->pop_back();
-	for (auto& line : s.columns)
-		while (!line.empty()) line.pop_back();
+	s.steel.reset();
 	world.removeRigidBody(s.ground.get());
 }
 
