@@ -194,7 +194,13 @@ void JitMember::merge()
 	const bool asleep = std::all_of(segments.begin(), segments.end(), [](const btRigidBody* b)
 									{ return b->getActivationState() == ISLAND_SLEEPING; });
 	const btTransform firstBefore = first.getCenterOfMassTransform();
-	for (btRigidBody* b : segments) m_world.removeRigidBody(b);
+	m_filters.clear();
+	for (btRigidBody* b : segments)
+	{
+		const btBroadphaseProxy* proxy = b->getBroadphaseHandle();
+		m_filters.push_back({proxy->m_collisionFilterGroup, proxy->m_collisionFilterMask});
+		m_world.removeRigidBody(b);
+	}
 	first.setCollisionShape(m_wholeShape.get());
 	first.setMassProps(mass, diagonal);
 	first.setCenterOfMassTransform(whole);
@@ -202,7 +208,7 @@ void JitMember::merge()
 	first.setAngularVelocity(spin);
 	first.updateInertiaTensor();
 	rebaseSupportJoint(firstBefore, whole);
-	m_world.addRigidBody(&first);
+	m_world.addRigidBody(&first, m_filters.front().first, m_filters.front().second);
 	if (asleep) first.setActivationState(ISLAND_SLEEPING);
 	const double after_j = 0.5 * double(mass * velocity.length2() + spin.dot(angularMomentum));
 	m_mergeLoss_j += kinetic_j - after_j;
@@ -230,10 +236,10 @@ void JitMember::subdivide()
 		b.updateInertiaTensor();
 	}
 	rebaseSupportJoint(whole, first.getCenterOfMassTransform());
-	for (btRigidBody* b : segments)
+	for (size_t i = 0; i < segments.size(); i++)
 	{
-		m_world.addRigidBody(b);
-		b->activate(true);
+		m_world.addRigidBody(segments[i], m_filters[i].first, m_filters[i].second);
+		segments[i]->activate(true);
 	}
 	for (size_t j = m_support ? 1 : 0; j < m_beam.joints().size(); j++) m_world.addConstraint(m_beam.joints()[j].constraint.get(), true);
 	m_wholeShape.reset();

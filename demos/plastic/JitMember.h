@@ -16,6 +16,7 @@
 #pragma once
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "BeamBuilder.h"
@@ -78,6 +79,7 @@ private:
 	btVector3 m_segmentInertia{0, 0, 0};
 	std::unique_ptr<btCompoundShape> m_wholeShape;
 	std::vector<btTransform> m_local;  // each segment in the whole body's frame, while whole
+	std::vector<std::pair<int, int>> m_filters;  // each segment's collision group and mask in the world
 	bool m_whole = false;
 	double m_yieldEnergy_j = 0;
 	double m_mergeLoss_j = 0;

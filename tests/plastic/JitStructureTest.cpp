@@ -1,0 +1,257 @@
+// A structure on the ground that is one static body until something can yield it (plastic::JitStructure, issue 24): a
+// whole portal frame stands still and costs the solver nothing, a portal hit twice (subdivided, at rest and merged,
+// subdivided again) books the always-jointed portal's plastic work, and a slow blow leaves it whole.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <algorithm>
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+#include "plastic/JitMember.h"
+#include "plastic/JitStructure.h"
+#include "plastic/SolverSettings.h"
+
+using namespace plastic;
+
+namespace
+{
+// A 4 m x 3 m portal of 50 x 100 mm steel, fixed at both bases to a static ground, gravity on, 1/240 s; a steel ball
+// thrown at the left column. The structure is a JitStructure (jit) or stays jointed.
+struct StruckPortal
+{
+	StructureWorld w;
+	btBoxShape groundShape{btVector3(20, 0.5f, 20)};
+	btRigidBody ground{btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &groundShape)};
+	std::unique_ptr<Beam> columnLeft, beam, columnRight;
+	JointSpec baseSpec;
+	Joint base;
+	std::unique_ptr<JitStructure> structure;
+	btSphereShape ballShape{0.15f};
+	std::unique_ptr<btRigidBody> ball;
+	bool jit;
+
+	static BeamSpec member(JointMethod method, const btVector3& from, const btVector3& to)
+	{
+		BeamSpec spec;
+		spec.start_m = from;
+		spec.end_m = to;
+		spec.segments = 3;
+		spec.joint.section = rectangle(0.05, 0.10);
+		spec.joint.material = steel();
+		spec.joint.method = method;
+		return spec;
+	}
+
+	StruckPortal(JointMethod method, bool justInTime) : jit(justInTime)
+	{
+		w.world().setGravity(btVector3(0, -9.81f, 0));
+		ground.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(0, -0.5f, 0)));
+		w.world().addRigidBody(&ground);
+		columnLeft = std::make_unique<Beam>(w.world(), member(method, btVector3(0, 0, 0), btVector3(0, 3, 0)), &ground);
+		beam = std::make_unique<Beam>(w.world(), member(method, btVector3(0, 3, 0), btVector3(4, 3, 0)), columnLeft->segments().back());
+		columnRight = std::make_unique<Beam>(w.world(), member(method, btVector3(4, 3, 0), btVector3(4, 0, 0)), beam->segments().back());
+		baseSpec = columnRight->jointSpecs().back();
+		baseSpec.pivot_m = btVector3(4, 0, 0);
+		base = makeJoint(baseSpec, *columnRight->segments().back(), ground);
+		w.world().addConstraint(base.constraint.get(), true);
+		std::vector<btRigidBody*> bodies;
+		std::vector<btTypedConstraint*> joints;
+		double yield_j = jointYieldEnergy_j(baseSpec);
+		for (const Beam* m : {columnLeft.get(), beam.get(), columnRight.get()})
+		{
+			bodies.insert(bodies.end(), m->segments().begin(), m->segments().end());
+			for (size_t j = 0; j < m->joints().size(); j++)
+			{
+				joints.push_back(m->joints()[j].constraint.get());
+				yield_j = std::min(yield_j, jointYieldEnergy_j(m->jointSpecs()[j]));
+			}
+		}
+		joints.push_back(base.constraint.get());
+		structure = std::make_unique<JitStructure>(w.world(), bodies, joints, yield_j);
+		if (jit) structure->merge();
+	}
+	~StruckPortal()
+	{
+		if (ball) w.world().removeRigidBody(ball.get());
+		structure.reset();
+		w.world().removeConstraint(base.constraint.get());
+		columnRight.reset();
+		beam.reset();
+		columnLeft.reset();
+		w.world().removeRigidBody(&ground);
+	}
+	double plasticWork_j() const { return columnLeft->plasticWork_j() + beam->plasticWork_j() + columnRight->plasticWork_j() + base.plasticWork_j(); }
+	// a ball of mass_kg flying along +x at speed_m_s, 0.5 m short of the left column at height_m
+	void throwBall(double mass_kg, double speed_m_s, double height_m)
+	{
+		if (ball) w.world().removeRigidBody(ball.get());
+		btVector3 inertia;
+		ballShape.calculateLocalInertia(btScalar(mass_kg), inertia);
+		btRigidBody::btRigidBodyConstructionInfo info(btScalar(mass_kg), nullptr, &ballShape, inertia);
+		info.m_startWorldTransform = btTransform(btQuaternion::getIdentity(), btVector3(-0.5f, btScalar(height_m), 0));
+		ball = std::make_unique<btRigidBody>(info);
+		ball->setLinearVelocity(btVector3(btScalar(speed_m_s), 0, 0));
+		w.world().addRigidBody(ball.get());
+	}
+	void run(double seconds)
+	{
+		const double dt = w.settings().internal_step_s;
+		for (int i = 0; i < int(std::lround(seconds / dt)); i++)
+		{
+			if (jit) structure->subdivideIfThreatened(dt);
+			w.stepOnce();
+			if (jit) structure->mergeIfAtRest();
+		}
+	}
+	std::vector<btTransform> transforms() const
+	{
+		std::vector<btTransform> t;
+		for (const btRigidBody* b : structure->bodies()) t.push_back(b->getCenterOfMassTransform());
+		return t;
+	}
+};
+
+void expectSamePlaces(const std::vector<btTransform>& a, const std::vector<btTransform>& b, double tolerance_m, const char* what)
+{
+	ASSERT_EQ(a.size(), b.size());
+	for (size_t i = 0; i < a.size(); i++) EXPECT_LE((a[i].getOrigin() - b[i].getOrigin()).length(), tolerance_m) << what << ", body " << i;
+}
+}  // namespace
+
+TEST(JitStructure, AWholePortalIsOneStaticBodyAndStandsStill)
+{
+	StruckPortal p(JointMethod::ElasticPlastic2, true);
+	ASSERT_TRUE(p.structure->whole());
+	EXPECT_EQ(p.w.world().getNumCollisionObjects(), 2);  // the ground and the portal
+	EXPECT_EQ(p.w.world().getNumConstraints(), 0);
+	const std::vector<btTransform> before = p.transforms();
+	p.run(1.0);
+	EXPECT_TRUE(p.structure->whole());
+	expectSamePlaces(p.transforms(), before, 0, "whole for 1 s");
+	p.structure->subdivide();
+	EXPECT_EQ(p.w.world().getNumCollisionObjects(), 1 + 9);  // the ground and the segments
+	EXPECT_EQ(p.w.world().getNumConstraints(), 10);
+	expectSamePlaces(p.transforms(), before, 0, "subdivided");
+	for (const btRigidBody* b : p.structure->bodies())
+	{
+		// 1 m column segments, 4/3 m beam segments
+		const bool inBeam = std::find(p.beam->segments().begin(), p.beam->segments().end(), b) != p.beam->segments().end();
+		EXPECT_NEAR(1 / b->getInvMass(), 7800 * 0.005 * (inBeam ? 4.0 / 3 : 1.0), 1e-3);
+		EXPECT_EQ(b->getLinearVelocity().length(), 0);
+	}
+	// jointed, it carries its own weight: after 1 s it has barely moved
+	p.run(1.0);
+	expectSamePlaces(p.transforms(), before, 0.01, "jointed for 1 s");
+}
+
+// A 200 kg ball at 8 m/s at the left column's mid-height: the portal subdivides before it arrives, sways and bends, stops
+// and is merged where it stopped; hit again it subdivides again. Its plastic work after each blow is the always-jointed
+// portal's within 5 %.
+TEST(JitStructure, APortalHitTwiceBendsAsTheJointedOne)
+{
+	for (JointMethod method : {JointMethod::PlasticHinge, JointMethod::ElasticPlastic2})
+	{
+		StruckPortal jit(method, true), jointed(method, false);
+		const char* name = jointMethodName(method);
+		double work[2][2] = {{0, 0}, {0, 0}};
+		for (int blow = 0; blow < 2; blow++)
+		{
+			int k = 0;
+			for (StruckPortal* p : {&jit, &jointed})
+			{
+				p->throwBall(200, 8, 1.5);
+				p->run(5.0);
+				work[blow][k++] = p->plasticWork_j();
+			}
+			EXPECT_EQ(jit.structure->subdivisions(), blow + 1) << name;
+			// stopped (every body slower than 0.1 mm/s), it is merged by hand: the toolkit's direct solver keeps a portal
+			// that has yielded creeping at about 3e-5 m/s (Baumgarte's targets in a closed loop, rounded away every step),
+			// so its bodies never fall asleep and mergeIfAtRest would wait; a cantilever (JitMember) merges by itself
+			for (const btRigidBody* body : jit.structure->bodies()) EXPECT_LT(body->getLinearVelocity().length(), 1e-4) << name;
+			jit.structure->merge();
+			EXPECT_EQ(jit.structure->merges(), blow + 2) << name;
+			EXPECT_LT(jit.structure->mergeLoss_j(), 1e-3) << name << ": the kinetic energy it had then";
+			EXPECT_GT(work[blow][1], (blow ? work[0][1] : 0.0) + 100.0) << name << ": the blow yields the jointed portal";
+			EXPECT_NEAR(work[blow][0], work[blow][1], 0.05 * work[blow][1]) << name << ", blow " << blow + 1;
+			// merged where it stopped: it stays there
+			const std::vector<btTransform> stopped = jit.transforms();
+			jit.run(0.5);
+			expectSamePlaces(jit.transforms(), stopped, 0, "merged");
+		}
+		std::printf("[ info     ] %s: plastic work after the first blow %.1f J (jointed %.1f J), after the second %.1f J (%.1f J); %d subdivisions, %d merges\n",
+					name, work[0][0], work[0][1], work[1][0], work[1][1], jit.structure->subdivisions(), jit.structure->merges());
+	}
+}
+
+// A blow that cannot bring the joints' yield energy (1/2 m v^2 below it) bounces off the whole portal.
+TEST(JitStructure, ASlowBallBouncesOffTheWholePortal)
+{
+	StruckPortal p(JointMethod::ElasticPlastic2, true);
+	const double slow = 0.8 * std::sqrt(2 * p.structure->yieldEnergy_j() / 200);
+	p.throwBall(200, slow, 1.5);
+	p.run(1.0);
+	EXPECT_TRUE(p.structure->whole());
+	EXPECT_EQ(p.structure->subdivisions(), 0);
+	EXPECT_LT(p.ball->getLinearVelocity().x(), 0.5 * slow) << "the ball met the portal";
+	StruckPortal jointed(JointMethod::ElasticPlastic2, false);
+	jointed.throwBall(200, slow, 1.5);
+	jointed.run(1.0);
+	EXPECT_LE(jointed.plasticWork_j(), 0.5 * 200 * slow * slow);
+	std::printf("[ info     ] yield energy %.1f J: a 200 kg ball at %.2f m/s bounces off the whole portal; the jointed portal books %.1f J\n",
+				p.structure->yieldEnergy_j(), slow, jointed.plasticWork_j());
+}
+
+// Many structures in one world: the set looks only at the bodies that move. A ball thrown at one of three portals in a row
+// subdivides that one and leaves the others whole.
+TEST(JitStructureSet, OnlyTheStructureABodyReachesSubdivides)
+{
+	StruckPortal a(JointMethod::PlasticHinge, true);
+	// two more portals of the same world, 10 and 20 m along z
+	std::vector<std::unique_ptr<Beam>> members;
+	std::vector<Joint> bases;
+	std::vector<std::unique_ptr<JitStructure>> others;
+	for (float z : {10.0f, 20.0f})
+	{
+		members.push_back(std::make_unique<Beam>(a.w.world(), StruckPortal::member(JointMethod::PlasticHinge, btVector3(0, 0, z), btVector3(0, 3, z)), &a.ground));
+		Beam& left = *members.back();
+		members.push_back(std::make_unique<Beam>(a.w.world(), StruckPortal::member(JointMethod::PlasticHinge, btVector3(0, 3, z), btVector3(4, 3, z)), left.segments().back()));
+		Beam& top = *members.back();
+		members.push_back(std::make_unique<Beam>(a.w.world(), StruckPortal::member(JointMethod::PlasticHinge, btVector3(4, 3, z), btVector3(4, 0, z)), top.segments().back()));
+		Beam& right = *members.back();
+		JointSpec baseSpec = right.jointSpecs().back();
+		baseSpec.pivot_m = btVector3(4, 0, z);
+		bases.push_back(makeJoint(baseSpec, *right.segments().back(), a.ground));
+		a.w.world().addConstraint(bases.back().constraint.get(), true);
+		std::vector<btRigidBody*> bodies;
+		std::vector<btTypedConstraint*> joints;
+		for (const Beam* m : {&left, &top, &right})
+		{
+			bodies.insert(bodies.end(), m->segments().begin(), m->segments().end());
+			for (const Joint& j : m->joints()) joints.push_back(j.constraint.get());
+		}
+		joints.push_back(bases.back().constraint.get());
+		others.push_back(std::make_unique<JitStructure>(a.w.world(), bodies, joints, a.structure->yieldEnergy_j()));
+		others.back()->merge();
+	}
+	JitStructureSet set(a.w.world());
+	set.add(*a.structure);
+	for (auto& s : others) set.add(*s);
+	EXPECT_EQ(a.w.world().getNumConstraints(), 0);
+	a.throwBall(200, 8, 1.5);
+	const double dt = a.w.settings().internal_step_s;
+	int subdivided = 0;
+	for (int i = 0; i < 240; i++)
+	{
+		subdivided += set.subdivideThreatened(dt);
+		a.w.stepOnce();
+	}
+	EXPECT_EQ(subdivided, 1);
+	EXPECT_FALSE(a.structure->whole());
+	EXPECT_GT(a.plasticWork_j(), 100.0);
+	for (auto& s : others) EXPECT_TRUE(s->whole());
+	others.clear();
+	for (Joint& b : bases) a.w.world().removeConstraint(b.constraint.get());
+	members.clear();
+}
