@@ -16,11 +16,13 @@
 # and the paper clip (a wire bent +-45 degrees until it breaks by low-cycle fatigue) to build/paper-clip-report/:
 #   summary.txt, result.json, hysteresis.svg   the structures runner (cycles to break beside Coffin-Manson's)
 #   frames/frame<n>.png                       the ExampleBrowser app through OSMesa, every 15th 60 Hz frame
+# and the city (100 steel frames, 10 hit by wrecking balls) run just in time, jointed and rigid in one run to
+# build/city-report/: summary.txt, result.json (each mode's costs and energies, and their ratios)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/deps.sh
 # preset main (CMakePresets.json): build/, no tests; its build preset builds the console runners (charpy, structures,
-# wrecking_ball), plasticity_browser and charpy_figures
+# wrecking_ball, city), plasticity_browser and charpy_figures
 cmake --preset main
 cmake --build --preset main
 build=build
@@ -73,3 +75,11 @@ mkdir -p "$clip/frames"
 (cd "$clip/frames" && "$bin/plasticity_browser" --window_backend=osmesa "--start_demo_name=Paper clip" \
 	--png_file=frame --png_skip_frames=14 --fixed_timestep=0.0166667 --max_frames=300 --width=800 --height=600 >/dev/null)
 echo "report written to $clip/ (summary.txt, result.json, hysteresis.svg, frames/)"
+
+# the city: 100 buildings, 10 hit, the three ways in one run (the costs' ratios are from one process)
+city="$build/city-report"
+rm -rf "$city"
+mkdir -p "$city"
+"$build/bin/city" --buildings=100 --hit=10 --mode=all | tee "$city/summary.txt"
+"$build/bin/city" --buildings=100 --hit=10 --mode=all --json > "$city/result.json.tmp" && mv "$city/result.json.tmp" "$city/result.json"
+echo "report written to $city/ (summary.txt, result.json)"

@@ -1,0 +1,63 @@
+// A city of steel frames, some hit by wrecking balls (issue 24, just-in-time subdivision): N buildings on a grid, each
+// one the wrecking ball scene's frame, the first few each hit by its own ball on a chain, at 60 Hz frames with the game
+// solver settings. Three ways to simulate the buildings:
+//   jit      one static body each (plastic::JitStructure) until a body that can yield one of its joints comes at it,
+//            then its jointed self, and one body again once it has come to rest (asleep)
+//   jointed  always jointed (the frames may sleep when at rest, as any body)
+//   rigid    always one static body: no plastic joints at all (the balls bounce off)
+// The runner (build/bin/city) reports the cost of an internal step before the first impact and over the run, the
+// balls' energy, the plastic work, and the most bodies and joints the world held.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "WreckingBall.h"
+
+namespace game
+{
+enum class CityMode
+{
+	JustInTime,
+	Jointed,
+	Rigid
+};
+const char* cityModeName(CityMode mode);
+bool parseCityMode(const std::string& text, CityMode& mode);
+
+struct CityParameters
+{
+	// every building's frame and every ball (section, material, joint method, storeys, bays, ball, chain, release), and
+	// the solver, frame rate and duration: the wrecking ball scene's parameters
+	WreckingBallParameters building;
+	CityMode mode = CityMode::JustInTime;
+	int buildings = 10;     // on a square grid, row by row along +x
+	int hit = 1;            // the first this many buildings are hit, each by its own ball
+	double spacing_m = 12;  // grid pitch, foot to foot
+};
+
+std::vector<std::string> validateCityParameters(const CityParameters& p);
+
+struct CityResult
+{
+	double idle_step_us = 0;  // median wall time of an internal step before the first impact
+	double step_us = 0;       // median over the run
+	double impact_energy_j = 0;   // the balls' kinetic energy at the bottom of their swing (m g drop of the release)
+	double plastic_energy_j = 0;  // booked by the buildings' joints
+	int bodies_max = 0;           // the most dynamic bodies in the world at once (balls and chain links included)
+	int joints_max = 0;           // the most constraints in the world at once (the chains' included)
+	int idle_bodies_max = 0;      // the same before the first impact
+	int idle_joints_max = 0;
+	int subdivisions = 0;         // jit
+	int merges = 0;
+	double first_impact_s = 0;  // NaN: none
+	long internal_steps = 0;
+	long frames = 0;
+	double simulated_s = 0;
+	double wall_s = 0;  // stepping only
+	bool finite = true;
+};
+
+// Builds the city, steps it to the end, measures.
+CityResult runCity(const CityParameters& p);
+}  // namespace game

@@ -1,0 +1,57 @@
+// The city (issue 24): its buildings simulated just in time book the plastic work of the always-jointed city, cost the
+// world nothing but the balls before the first impact, and subdivide only the buildings that are hit; rigid buildings
+// book nothing. Internal steps and bodies are counted, not timed (build/bin/city times them).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "City.h"
+
+using namespace game;
+
+namespace
+{
+CityParameters city(CityMode mode)
+{
+	CityParameters p;
+	p.mode = mode;
+	p.buildings = 6;
+	p.hit = 2;
+	p.building.duration_s = 2.5;
+	return p;
+}
+}  // namespace
+
+TEST(City, JustInTimeBooksTheJointedCitysPlasticWork)
+{
+	const CityResult jit = runCity(city(CityMode::JustInTime)), jointed = runCity(city(CityMode::Jointed)), rigid = runCity(city(CityMode::Rigid));
+	const CityParameters p = city(CityMode::JustInTime);
+	const int chain = p.hit * (p.building.chain_links + 1);  // the balls and their links
+	ASSERT_TRUE(jit.finite && jointed.finite && rigid.finite);
+	EXPECT_GT(jointed.plastic_energy_j, 0.5 * jointed.impact_energy_j) << "the balls bend the frames";
+	EXPECT_NEAR(jit.plastic_energy_j, jointed.plastic_energy_j, 0.05 * jointed.plastic_energy_j);
+	EXPECT_EQ(rigid.plastic_energy_j, 0.0);
+	// only the hit buildings subdivide, just before the balls reach them: until the first impact the world holds the balls,
+	// their chains and at most the hit buildings' segments (12 each) and joints (13 each)
+	EXPECT_EQ(jit.subdivisions, p.hit);
+	EXPECT_LE(jit.idle_bodies_max, chain + p.hit * 12);
+	EXPECT_LE(jit.idle_joints_max, chain + p.hit * 13);
+	EXPECT_EQ(rigid.bodies_max, chain);
+	EXPECT_GT(jointed.idle_bodies_max, chain + 6 * 12 - 1);  // every segment of every building
+	EXPECT_LT(jit.bodies_max, jointed.bodies_max / 2);
+	EXPECT_NEAR(jit.first_impact_s, jointed.first_impact_s, 1e-9);
+	std::printf("[ info     ] plastic work: jit %.1f J, jointed %.1f J (balls %.1f J); bodies at most: jit %d, jointed %d, rigid %d\n", jit.plastic_energy_j,
+				jointed.plastic_energy_j, jointed.impact_energy_j, jit.bodies_max, jointed.bodies_max, rigid.bodies_max);
+}
+
+TEST(City, BadParametersAreNamed)
+{
+	CityParameters p;
+	p.hit = 11;
+	p.spacing_m = 3;
+	const std::vector<std::string> e = validateCityParameters(p);
+	ASSERT_EQ(e.size(), 2u);
+	EXPECT_EQ(e[0], "hit: 11 is not in [0, 10]");
+	EXPECT_EQ(e[1].rfind("spacing: 3 is not in [", 0), 0u) << e[1];
+}
