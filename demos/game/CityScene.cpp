@@ -87,19 +87,7 @@ CityResult runCity(const CityParameters& p)
 	ground.setWorldTransform(btTransform(btMatrix3x3::getIdentity(), btVector3(half - 20, -0.5, half - 20)));
 	world.addRigidBody(&ground);
 
-	SteelFrameSpec frame;
-	frame.storeys = b.storeys;
-	frame.bays = b.bays;
-	frame.span_m = b.span_m;
-	frame.height_m = b.height_m;
-	frame.column_segments = b.column_segments;
-	frame.beam_segments = b.beam_segments;
-	frame.joint.section = plastic::iSection(b.section_depth_m, b.flange_width_m, b.web_thickness_m, b.flange_thickness_m);
-	frame.joint.material.yield_stress_pa = b.yield_stress_pa;
-	frame.joint.material.youngs_modulus_pa = b.youngs_modulus_pa;
-	frame.joint.material.density_kg_m3 = b.density_kg_m3;
-	frame.joint.method = b.method;
-	frame.joint.max_plastic_rotation_rad = b.max_plastic_rotation_rad;
+	SteelFrameSpec frame = steelFrameSpec(b);
 	frame.may_sleep = true;  // a city at rest sleeps
 
 	std::vector<std::unique_ptr<SteelFrame>> frames;
@@ -119,17 +107,7 @@ CityResult runCity(const CityParameters& p)
 	std::vector<std::unique_ptr<Pendulum>> balls;
 	for (int i = 0; i < p.hit; i++)
 	{
-		PendulumSpec ball;
-		ball.bottom_m = frames[size_t(i)]->columns()[0][0]->segments().front()->getCenterOfMassPosition() * btVector3(1, 0, 1) +
-						btVector3(btScalar(-(b.section_depth_m / 2 + b.ball_radius_m + 0.02)), btScalar(b.impact_height_m), 0);
-		ball.ball_mass_kg = b.ball_mass_kg;
-		ball.ball_radius_m = b.ball_radius_m;
-		ball.ball_friction = b.ball_friction;
-		ball.chain_length_m = b.chain_length_m;
-		ball.chain_links = b.chain_links;
-		ball.chain_mass_kg = b.chain_mass_kg;
-		ball.release_angle_rad = b.release_angle_rad;
-		ball.release_direction = -1;
+		const PendulumSpec ball = pendulumSpec(b, frames[size_t(i)]->columns()[0][0]->segments().front()->getCenterOfMassPosition() * btVector3(1, 0, 1));
 		balls.push_back(std::make_unique<Pendulum>(world, ball));
 	}
 	r.impact_energy_j = p.hit * wreckingBallEstimate(b).release_energy_j;

@@ -13,6 +13,8 @@
 #include "plastic/JointFactory.h"
 #include "plastic/SolverSettings.h"
 #include "scene/SteppedScene.h"
+#include "Pendulum.h"
+#include "SteelFrame.h"
 
 namespace game
 {
@@ -58,6 +60,11 @@ struct WreckingBallParameters
 
 // "name: value is not in [low, high] unit" for every parameter out of its range
 std::vector<std::string> validateWreckingBallParameters(const WreckingBallParameters& p);
+// the frame of the parameters (its segments may not sleep: the figures were made so; the city lets them) standing at
+// origin_m, and the ball's pendulum that hits it: released away from it (towards -x), at the bottom of its swing 2 cm from
+// its left column at the impact height
+SteelFrameSpec steelFrameSpec(const WreckingBallParameters& p, const btVector3& origin_m = btVector3(0, 0, 0));
+PendulumSpec pendulumSpec(const WreckingBallParameters& p, const btVector3& origin_m = btVector3(0, 0, 0));
 
 struct WreckingBallEstimate
 {

@@ -70,4 +70,39 @@ WreckingBallEstimate wreckingBallEstimate(const WreckingBallParameters& p)
 	a.impact_speed_m_s = std::sqrt(2.0 * a.release_energy_j / inertia) * R;
 	return a;
 }
+
+SteelFrameSpec steelFrameSpec(const WreckingBallParameters& p, const btVector3& origin_m)
+{
+	SteelFrameSpec spec;
+	spec.origin_m = origin_m;
+	spec.may_sleep = false;
+	spec.storeys = p.storeys;
+	spec.bays = p.bays;
+	spec.span_m = p.span_m;
+	spec.height_m = p.height_m;
+	spec.column_segments = p.column_segments;
+	spec.beam_segments = p.beam_segments;
+	spec.joint.section = plastic::iSection(p.section_depth_m, p.flange_width_m, p.web_thickness_m, p.flange_thickness_m);
+	spec.joint.material.yield_stress_pa = p.yield_stress_pa;
+	spec.joint.material.youngs_modulus_pa = p.youngs_modulus_pa;
+	spec.joint.material.density_kg_m3 = p.density_kg_m3;
+	spec.joint.method = p.method;
+	spec.joint.max_plastic_rotation_rad = p.max_plastic_rotation_rad;
+	return spec;
+}
+
+PendulumSpec pendulumSpec(const WreckingBallParameters& p, const btVector3& origin_m)
+{
+	PendulumSpec pendulum;
+	pendulum.bottom_m = origin_m + btVector3(btScalar(-(p.section_depth_m / 2 + p.ball_radius_m + 0.02)), btScalar(p.impact_height_m), 0);
+	pendulum.ball_mass_kg = p.ball_mass_kg;
+	pendulum.ball_radius_m = p.ball_radius_m;
+	pendulum.ball_friction = p.ball_friction;
+	pendulum.chain_length_m = p.chain_length_m;
+	pendulum.chain_links = p.chain_links;
+	pendulum.chain_mass_kg = p.chain_mass_kg;
+	pendulum.release_angle_rad = p.release_angle_rad;
+	pendulum.release_direction = -1;
+	return pendulum;
+}
 }  // namespace game

@@ -36,24 +36,8 @@ struct WreckingBallScene::State
 {
 	explicit State(const WreckingBallParameters& params) : p(params), estimate(wreckingBallEstimate(p)), structure(p.solver), ledger(btVector3(0, btScalar(-p.gravity_m_s2), 0)), swing(btVector3(0, btScalar(-p.gravity_m_s2), 0)) {}
 
-	SteelFrameSpec frameSpec() const
-	{
-		SteelFrameSpec spec;
-		spec.may_sleep = false;  // as the figures were made (the frame would sleep until the ball wakes it)
-		spec.storeys = p.storeys;
-		spec.bays = p.bays;
-		spec.span_m = p.span_m;
-		spec.height_m = p.height_m;
-		spec.column_segments = p.column_segments;
-		spec.beam_segments = p.beam_segments;
-		spec.joint.section = plastic::iSection(p.section_depth_m, p.flange_width_m, p.web_thickness_m, p.flange_thickness_m);
-		spec.joint.material.yield_stress_pa = p.yield_stress_pa;
-		spec.joint.material.youngs_modulus_pa = p.youngs_modulus_pa;
-		spec.joint.material.density_kg_m3 = p.density_kg_m3;
-		spec.joint.method = p.method;
-		spec.joint.max_plastic_rotation_rad = p.max_plastic_rotation_rad;
-		return spec;
-	}
+	// as the figures were made: the frame would sleep until the ball wakes it
+	SteelFrameSpec frameSpec() const { return steelFrameSpec(p); }
 
 	double relativeRotation(size_t i) const { return angles[i].second->angle_rad() - angles[i].first->angle_rad(); }
 	double chainAndBallKinetic() const { return swing.measure().kinetic_j; }
@@ -241,16 +225,7 @@ WreckingBallScene::WreckingBallScene(const WreckingBallParameters& p)
 	}
 
 	// the ball at the release angle, away from the frame (towards -x); at the bottom of its swing 2 cm from the column
-	PendulumSpec pendulum;
-	pendulum.bottom_m = btVector3(btScalar(-(p.section_depth_m / 2 + p.ball_radius_m + 0.02)), btScalar(p.impact_height_m), 0);
-	pendulum.ball_mass_kg = p.ball_mass_kg;
-	pendulum.ball_radius_m = p.ball_radius_m;
-	pendulum.ball_friction = p.ball_friction;
-	pendulum.chain_length_m = p.chain_length_m;
-	pendulum.chain_links = p.chain_links;
-	pendulum.chain_mass_kg = p.chain_mass_kg;
-	pendulum.release_angle_rad = p.release_angle_rad;
-	pendulum.release_direction = -1;
+	const PendulumSpec pendulum = pendulumSpec(p);
 	s.pendulum = std::make_unique<Pendulum>(world, pendulum);
 	s.ball = &s.pendulum->ball();
 	s.ledger.addBody(*s.ball);
