@@ -176,7 +176,16 @@ struct Reached : btBroadphaseAabbCallback
 int JitStructureSet::subdivideThreatened(double lookahead_s)
 {
 	int count = 0;
-	std::unordered_map<const void*, JitStructure*> wholeBodies;  // made when the first mover is found
+	// the whole structures' bodies, made again only when a structure has merged or subdivided since
+	long transitions = 0;
+	for (const JitStructure* s : m_structures) transitions += s->subdivisions() + s->merges();
+	if (transitions != m_transitions)
+	{
+		m_wholeBodies.clear();
+		for (JitStructure* s : m_structures)
+			if (s->whole()) m_wholeBodies[s->wholeBody()] = s;
+		m_transitions = transitions;
+	}
 	const btCollisionObjectArray& objects = m_world.getCollisionObjectArray();
 	for (int i = 0; i < objects.size(); i++)
 	{
@@ -189,16 +198,16 @@ int JitStructureSet::subdivideThreatened(double lookahead_s)
 		if (!mover->isKinematicObject() && 0.5 * double(speed * speed) / double(mover->getInvMass()) <= m_leastYield_j) continue;
 		const btScalar r = speed * btScalar(lookahead_s);
 		if (!(r > 0)) continue;
-		if (wholeBodies.empty())
-			for (JitStructure* s : m_structures)
-				if (s->whole()) wholeBodies[s->wholeBody()] = s;
-		Reached reached(wholeBodies);
+		if (m_wholeBodies.empty()) break;
+		Reached reached(m_wholeBodies);
 		m_world.getBroadphase()->aabbTest(minimum - btVector3(r, r, r), maximum + btVector3(r, r, r), reached);
 		for (JitStructure* s : reached.found)
 			if (s->whole() && s->threatens(*mover))
 			{
+				m_wholeBodies.erase(s->wholeBody());
 				s->subdivide();
 				count++;
+				m_transitions++;
 			}
 	}
 	return count;

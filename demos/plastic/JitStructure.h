@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <limits>
 #include <memory>
+#include <unordered_map>
 #include <vector>
 
 #include "btBulletDynamicsCommon.h"
@@ -105,5 +106,7 @@ private:
 	btDiscreteDynamicsWorld& m_world;
 	std::vector<JitStructure*> m_structures;
 	double m_leastYield_j = std::numeric_limits<double>::infinity();  // of them all: a body with less energy threatens none
+	std::unordered_map<const void*, JitStructure*> m_wholeBodies;     // the whole ones' bodies
+	long m_transitions = -1;                                          // their merges and subdivisions when it was made
 };
 }  // namespace plastic
