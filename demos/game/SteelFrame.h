@@ -31,8 +31,8 @@ const int kSteelFrameGroup = 1 << 6;
 class SteelFrame
 {
 public:
-	// ground: the static body the feet are joined to. A spec whose members validate refuses throws nothing: the members
-	// are built as plastic::Beam builds them (see errors()); check with validate(memberSpec(...)) first.
+	// ground: the static body the feet are joined to. Check a column's and a beam's spec with
+	// plastic::validate(memberSpec(...)) first: a refused member is built without bodies, which the frame does not guard.
 	SteelFrame(btDiscreteDynamicsWorld& world, const SteelFrameSpec& spec, btRigidBody& ground, double internalStep_s);
 	~SteelFrame();
 	SteelFrame(const SteelFrame&) = delete;

@@ -91,7 +91,7 @@ JitMember::JitMember(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRig
 	m_segmentInertia = btVector3(btScalar(1) / invInertia.x(), btScalar(1) / invInertia.y(), btScalar(1) / invInertia.z());
 	m_yieldEnergy_j = std::numeric_limits<double>::infinity();
 	for (const JointSpec& j : m_beam.jointSpecs()) m_yieldEnergy_j = std::min(m_yieldEnergy_j, jointYieldEnergy_j(j));
-	if (m_beam.jointSpecs().empty()) m_yieldEnergy_j = jointYieldEnergy_j(spec.joint);
+	// a member without joints (one segment, free) has nothing to yield: it stays one body
 	merge();
 	m_merges = 0;
 	m_mergeLoss_j = 0;
@@ -138,6 +138,9 @@ bool JitMember::isInnerJoint(const btTypedConstraint* c) const
 bool JitMember::mergeable() const
 {
 	if (m_whole || !m_beam.errors().empty()) return false;
+	// a broken member is pieces, not one body
+	for (const Joint& j : m_beam.joints())
+		if (!j.constraint->isEnabled()) return false;
 	// a joint from outside on a segment other than the first would lose its body while the member is whole
 	const std::vector<btRigidBody*>& s = m_beam.segments();
 	for (size_t i = 1; i < s.size(); i++)
@@ -270,9 +273,17 @@ bool JitMember::subdivideIfThreatened(double lookahead_s)
 		object->getCollisionShape()->getAabb(object->getWorldTransform(), otherMin, otherMax);
 		const btVector3 reach(speed * btScalar(lookahead_s), speed * btScalar(lookahead_s), speed * btScalar(lookahead_s));
 		if (!TestAabbAgainstAabb2(minimum - reach, maximum + reach, otherMin, otherMax)) continue;
+		// the mass that meets the member: a kinematic body's is unbounded; against a free member the reduced mass of the
+		// two; against a supported one the other body's own (the support takes what the member does not)
 		const bool otherMoves = other && other->getInvMass() > 0;
-		const double reduced_kg = otherMoves ? double(mass) / (1 + double(mass * other->getInvMass())) : double(mass);
-		if (0.5 * reduced_kg * double(speed) * double(speed) > m_yieldEnergy_j) threatened = true;
+		if (other && other->isKinematicObject() && speed > 0)
+		{
+			threatened = true;
+			continue;
+		}
+		double mass_kg = double(mass);
+		if (otherMoves) mass_kg = m_support ? 1.0 / double(other->getInvMass()) : double(mass) / (1 + double(mass * other->getInvMass()));
+		if (0.5 * mass_kg * double(speed) * double(speed) > m_yieldEnergy_j) threatened = true;
 	}
 	if (threatened) subdivide();
 	return threatened;
@@ -282,10 +293,10 @@ bool JitMember::mergeIfAtRest()
 {
 	if (m_whole) return false;
 	const std::vector<btRigidBody*>& s = m_beam.segments();
-	if (!std::all_of(s.begin(), s.end(), [](const btRigidBody* b)
-					 { return b->getActivationState() == ISLAND_SLEEPING; }))
+	if (!mergeable() || !std::all_of(s.begin(), s.end(), [](const btRigidBody* b)
+									 { return b->getActivationState() == ISLAND_SLEEPING; }))
 		return false;
 	merge();
-	return true;
+	return m_whole;
 }
 }  // namespace plastic

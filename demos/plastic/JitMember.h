@@ -25,8 +25,11 @@ namespace plastic
 {
 // The least work that can yield a joint of the spec: the elastic energy its spring holds when a DOF reaches its capacity,
 // cap^2 / (2 k), over the DOFs (bending about both axes, torsion, axial, shear), with the section's stiffness over the
-// joint's segment length (J). A rigid-plastic joint (plastic hinge, hinge motor) stands for the same member: its section
-// stores as much before it yields. An impact that cannot deliver this much to the member cannot yield it.
+// joint's segment length (J), from an unloaded joint. It is the member's: an elastic-plastic joint whose springs are
+// elastic at the step cannot yield under less. It is not a bound for what the model books where it is rigid-plastic (a
+// plastic hinge, an elastic-plastic DOF too stiff for the step: they yield under any blow whose impulse over a step
+// passes the cap), nor for a joint that is loaded already, hardens from below fy W_pl, breaks by force, or yields on a
+// surface of two DOFs: there just in time misses what such a joint would book under a smaller blow.
 double jointYieldEnergy_j(const JointSpec& spec);
 
 class JitMember
@@ -51,10 +54,10 @@ public:
 	// segment other than the first: join a member to others at its first segment).
 	void merge();
 	bool mergeable() const;
-	// Before a step of step_s: subdivides the whole member when a body whose swept box reaches it within lookahead_s can
-	// bring more than jointYieldEnergy_j to it: 1/2 mu v^2, v the relative speed, mu the reduced mass of the other body
-	// and the whole member (their masses: an upper bound of the mass at the point of contact; a static body: the
-	// member's). Returns whether it subdivided.
+	// Before a step: subdivides the whole member when a body whose swept box reaches it within lookahead_s can bring more
+	// than yieldEnergy_j to it: 1/2 m v^2, v the relative speed, m the other body's mass against a supported member (the
+	// support takes what the member does not), the reduced mass of the two against a free one; a moving kinematic body
+	// always can. Returns whether it subdivided.
 	bool subdivideIfThreatened(double lookahead_s);
 	// After a step: merges a subdivided member whose segments are all asleep (Bullet's deactivation, so a member that
 	// may not sleep never merges). Returns whether it merged.

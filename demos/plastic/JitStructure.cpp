@@ -71,7 +71,11 @@ void JitStructure::merge()
 		info.m_rollingFriction = m_bodies.front()->getRollingFriction();
 	}
 	m_wholeBody = std::make_unique<btRigidBody>(info);
-	m_world.addRigidBody(m_wholeBody.get());
+	// with its bodies' collision filter, so that it meets what they would
+	if (m_saved.empty())
+		m_world.addRigidBody(m_wholeBody.get());
+	else
+		m_world.addRigidBody(m_wholeBody.get(), m_saved.front().group, m_saved.front().mask);
 	m_whole = true;
 	m_merges++;
 }
@@ -109,7 +113,7 @@ btScalar fastestPointSpeed(const btRigidBody& body, const btVector3& aabbMin, co
 bool JitStructure::threatens(const btRigidBody& other) const
 {
 	if (!m_whole) return false;
-	if (other.isKinematicObject()) return true;
+	if (other.isKinematicObject()) return other.getLinearVelocity().length2() + other.getAngularVelocity().length2() > 0;
 	if (!(other.getInvMass() > 0)) return false;
 	// its closing speed: the velocity of its centre towards the nearest point of the structure's box (all of it from
 	// inside the box), and its spin over half its own box
@@ -186,6 +190,7 @@ int JitStructureSet::subdivideThreatened(double lookahead_s)
 			if (s->whole()) m_wholeBodies[s->wholeBody()] = s;
 		m_transitions = transitions;
 	}
+	std::vector<JitStructure*> threatened;
 	const btCollisionObjectArray& objects = m_world.getCollisionObjectArray();
 	for (int i = 0; i < objects.size(); i++)
 	{
@@ -202,13 +207,15 @@ int JitStructureSet::subdivideThreatened(double lookahead_s)
 		Reached reached(m_wholeBodies);
 		m_world.getBroadphase()->aabbTest(minimum - btVector3(r, r, r), maximum + btVector3(r, r, r), reached);
 		for (JitStructure* s : reached.found)
-			if (s->whole() && s->threatens(*mover))
-			{
-				m_wholeBodies.erase(s->wholeBody());
-				s->subdivide();
-				count++;
-				m_transitions++;
-			}
+			if (s->threatens(*mover) && std::find(threatened.begin(), threatened.end(), s) == threatened.end()) threatened.push_back(s);
+	}
+	// after the loop: a subdivision changes the world's array of objects
+	for (JitStructure* s : threatened)
+	{
+		m_wholeBodies.erase(s->wholeBody());
+		s->subdivide();
+		count++;
+		m_transitions++;
 	}
 	return count;
 }

@@ -51,7 +51,7 @@ public:
 	bool subdivideIfThreatened(double lookahead_s);
 	// Whether other, wherever it is, can bring more than yieldEnergy_j to the whole structure: 1/2 m v^2 with v its closing
 	// speed (its centre's velocity towards the nearest point of the structure's box, all of it from inside the box) and
-	// its spin over half its own box (the structure does not move while whole); a kinematic body always can.
+	// its spin over half its own box (the structure does not move while whole); a moving kinematic body always can.
 	bool threatens(const btRigidBody& other) const;
 	// After a step: merges the structure when every one of its bodies is asleep. Returns whether it merged.
 	bool mergeIfAtRest();
@@ -82,9 +82,9 @@ private:
 	int m_merges = 0;
 };
 
-// Many structures in one world (a city): before each step only the bodies that move are looked at, each one's box swept
-// over the lookahead and tested against the broadphase, so that a step costs what the moving bodies cost and not what
-// the standing structures do.
+// Many structures in one world (a city): before each step only the bodies that move are tested against the broadphase,
+// each one's box swept over the lookahead, so that a step costs what the moving bodies cost and not what the standing
+// structures do (but for a scan of the world's objects to find the moving ones).
 class JitStructureSet
 {
 public:

@@ -174,7 +174,14 @@ struct StruckCantilever
 	std::unique_ptr<JitMember> member;
 	bool jit;
 
-	StruckCantilever(JointMethod method, bool justInTime) : jit(justInTime)
+	static WorldSolverSettings settings(double step_s)
+	{
+		WorldSolverSettings s;
+		s.internal_step_s = step_s;
+		return s;
+	}
+
+	StruckCantilever(JointMethod method, bool justInTime, double step_s = 1.0 / 240) : w(settings(step_s)), jit(justInTime)
 	{
 		support.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(-0.1f, 0, 0)));
 		w.world().addRigidBody(&support);
@@ -265,24 +272,32 @@ TEST(JitMember, ACantileverHitTwiceBendsAsTheJointedOne)
 	}
 }
 
-// A blow that cannot bring the joint's yield energy (1/2 mu v^2 below it) leaves the member one body.
+// A blow that cannot bring the joints' yield energy leaves the member one body: the member is supported, so the ball's own
+// 1/2 m v^2 is what can reach it (64 % of the yield energy here). What that misses is printed, not asserted: the
+// always-jointed member books part of the same blow, at 1/240 s (its joints rigid-plastic) and at 0.25 ms too (its bending
+// springs elastic, but its shear and axial DOFs still too stiff for the step, so rigid-plastic, and the ball's impulse
+// passes their caps in one step): the yield energy is not a bound for rigid-plastic DOFs (JitMember.h).
 TEST(JitMember, ASlowBallDoesNotSubdivideIt)
 {
 	StruckCantilever c(JointMethod::ElasticPlastic2, true);
-	const double mass = 1.0 / double(c.member->wholeBody()->getInvMass());
-	const double reduced = 50 * mass / (50 + mass);
-	const double slow = 0.8 * std::sqrt(2 * c.member->yieldEnergy_j() / reduced);
+	const double blow_j = 0.64 * c.member->yieldEnergy_j();
+	const double slow = std::sqrt(2 * blow_j / 50);
 	c.throwBall(50, slow, c.tip());
 	c.run(2.0);
 	EXPECT_TRUE(c.member->whole());
 	EXPECT_EQ(c.member->subdivisions(), 0);
 	EXPECT_GT(c.ball->getLinearVelocity().y(), -0.9 * slow) << "the ball met the member";
-	// what the member misses by staying whole: the jointed member's plastic work under the same blow, at most the
-	// blow's energy at the reduced mass
-	StruckCantilever jointed(JointMethod::ElasticPlastic2, false);
-	jointed.throwBall(50, slow, jointed.tip());
-	jointed.run(2.0);
-	EXPECT_LE(jointed.member->plasticWork_j(), 0.5 * reduced * slow * slow);
-	std::printf("[ info     ] yield energy %.1f J: a ball at %.2f m/s (%.1f J at the reduced mass) leaves it whole; the jointed member books %.1f J\n",
-				c.member->yieldEnergy_j(), slow, 0.5 * reduced * slow * slow, jointed.member->plasticWork_j());
+	// a ball with a little more than the yield energy subdivides it
+	StruckCantilever fast(JointMethod::ElasticPlastic2, true);
+	fast.throwBall(50, std::sqrt(2 * 1.1 * c.member->yieldEnergy_j() / 50), fast.tip());
+	fast.run(0.5);
+	EXPECT_EQ(fast.member->subdivisions(), 1);
+	StruckCantilever elastic(JointMethod::ElasticPlastic2, false, 2.5e-4), coarse(JointMethod::ElasticPlastic2, false);
+	for (StruckCantilever* j : {&elastic, &coarse})
+	{
+		j->throwBall(50, slow, j->tip());
+		j->run(1.0);
+	}
+	std::printf("[ info     ] yield energy %.1f J: a blow of %.1f J leaves it whole; jointed, the member books %.1f J at 0.25 ms and %.1f J at 1/240 s\n",
+				c.member->yieldEnergy_j(), blow_j, elastic.member->plasticWork_j(), coarse.member->plasticWork_j());
 }
