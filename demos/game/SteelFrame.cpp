@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <limits>
 
-#include "plastic/JitMember.h"
 
 namespace game
 {

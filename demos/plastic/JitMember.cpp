@@ -8,10 +8,6 @@ namespace plastic
 {
 namespace
 {
-double energyAtCap(double cap, double stiffness)
-{
-	return cap > 0 && stiffness > 0 && std::isfinite(cap) ? cap * cap / (2 * stiffness) : std::numeric_limits<double>::infinity();
-}
 
 // the frame of a constraint on body, in body's coordinates, and its setter; false for a constraint whose frames this
 // does not know
@@ -73,13 +69,6 @@ btMatrix3x3 parallelAxis(btScalar mass, const btVector3& r)
 }
 }  // namespace
 
-double jointYieldEnergy_j(const JointSpec& spec)
-{
-	const SectionCapacities cap = jointCapacities(spec);
-	const SegmentStiffness k = jointStiffness(spec);
-	return std::min({energyAtCap(cap.plastic_moment_y_nm, k.bending_y_nm_rad), energyAtCap(cap.plastic_moment_z_nm, k.bending_z_nm_rad),
-					 energyAtCap(cap.torque_nm, k.torsion_nm_rad), energyAtCap(cap.axial_n, k.axial_n_m), energyAtCap(cap.shear_n, k.shear_n_m)});
-}
 
 JitMember::JitMember(btDiscreteDynamicsWorld& world, const BeamSpec& spec, btRigidBody* support) : m_world(world), m_beam(world, spec, support), m_support(support)
 {

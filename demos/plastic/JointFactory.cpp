@@ -2,7 +2,9 @@
 
 #include "HingeLaw.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <utility>
 
@@ -118,6 +120,23 @@ SectionCapacities jointCapacities(const JointSpec& spec) { return spec.capacitie
 SegmentStiffness jointStiffness(const JointSpec& spec)
 {
 	return spec.stiffness ? *spec.stiffness : stiffness(spec.section, spec.material, spec.segment_length_m);
+}
+
+namespace
+{
+// cap^2 / 2k: the elastic energy of a spring of stiffness k at the force cap (infinite for a rigid or uncapped DOF)
+double energyAtCap(double cap, double stiffness)
+{
+	return cap > 0 && stiffness > 0 && std::isfinite(cap) ? cap * cap / (2 * stiffness) : std::numeric_limits<double>::infinity();
+}
+}  // namespace
+
+double jointYieldEnergy_j(const JointSpec& spec)
+{
+	const SectionCapacities cap = jointCapacities(spec);
+	const SegmentStiffness k = jointStiffness(spec);
+	return std::min({energyAtCap(cap.plastic_moment_y_nm, k.bending_y_nm_rad), energyAtCap(cap.plastic_moment_z_nm, k.bending_z_nm_rad),
+					 energyAtCap(cap.torque_nm, k.torsion_nm_rad), energyAtCap(cap.axial_n, k.axial_n_m), energyAtCap(cap.shear_n, k.shear_n_m)});
 }
 
 LowCycleFatigue universalSlopesFatigue(double reduction_of_area, double hinge_length_m)

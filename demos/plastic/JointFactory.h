@@ -105,6 +105,14 @@ struct Joint
 // The joint's capacities and stiffnesses: the ones given directly, or the section's of the material.
 SectionCapacities jointCapacities(const JointSpec& spec);
 SegmentStiffness jointStiffness(const JointSpec& spec);
+// The least work that can yield a joint of the spec: the elastic energy its spring holds when a DOF reaches its capacity,
+// cap^2 / (2 k), over the DOFs (bending about both axes, torsion, axial, shear), with the section's stiffness over the
+// joint's segment length (J), from an unloaded joint. It is the member's: an elastic-plastic joint whose springs are
+// elastic at the step cannot yield under less. It is not a bound for what the model books where it is rigid-plastic (a
+// plastic hinge, an elastic-plastic DOF too stiff for the step: they yield under any blow whose impulse over a step
+// passes the cap), nor for a joint that is loaded already, hardens from below fy W_pl, breaks by force, or yields on a
+// surface of two DOFs: there just in time misses what such a joint would book under a smaller blow.
+double jointYieldEnergy_j(const JointSpec& spec);
 
 // A message per field of the spec that is out of its range (naming the field and its range; the section's error and
 // the solver settings' included); empty when makeJoint can make the joint.

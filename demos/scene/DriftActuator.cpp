@@ -6,14 +6,14 @@
 namespace scene
 {
 DriftActuator::DriftActuator(btRigidBody& body, const btVector3& localPoint_m, const btVector3& direction, const btVector3& restPoint_m, DriftPath path,
-							 double stiffness_n_m, double damping_n_s_m)
+							 double stiffness_n_m, double mass_kg)
 	: m_body(body),
 	  m_load(body, localPoint_m, direction),
 	  m_direction(direction),
 	  m_rest_m(restPoint_m),
 	  m_path(std::move(path)),
 	  m_stiffness_n_m(stiffness_n_m),
-	  m_damping_n_s_m(damping_n_s_m),
+	  m_damping_n_s_m(2.0 * std::sqrt(stiffness_n_m * mass_kg)),
 	  m_forceSum_n(m_path.drifts.size(), 0.0),
 	  m_driftSum(m_path.drifts.size(), 0.0),
 	  m_samples(m_path.drifts.size(), 0)

@@ -26,9 +26,9 @@ class DriftActuator
 {
 public:
 	// restPoint_m: the point's world position at zero drift (the drift is measured from it along direction, a unit
-	// vector); stiffness and damping: the spring's (N/m, N s/m), see stableStiffness_n_m
+	// vector); stiffness: the spring's (N/m, see stableStiffness_n_m), critically damped for mass_kg at the point
 	DriftActuator(btRigidBody& body, const btVector3& localPoint_m, const btVector3& direction, const btVector3& restPoint_m, DriftPath path,
-				  double stiffness_n_m, double damping_n_s_m);
+				  double stiffness_n_m, double mass_kg);
 	// the stiffest spring on a point of the given mass that is stable at the step (k dt^2 / m <= 1/4), at most
 	// 100 times the structure's own stiffness there
 	static double stableStiffness_n_m(double structureStiffness_n_m, double mass_kg, double step_s);

@@ -9,6 +9,7 @@
 #include <memory>
 #include <vector>
 
+#include "CantileverRig.h"
 #include "plastic/JitMember.h"
 #include "plastic/SolverSettings.h"
 
@@ -67,17 +68,7 @@ void expectSameMechanics(const Mechanics& before, const Mechanics& after, const 
 	expectSameVector(after.angularMomentum, before.angularMomentum, 1e-5 * (before.angularMomentum.length() + 1), what);
 }
 
-BeamSpec memberSpec(JointMethod method)
-{
-	BeamSpec spec;
-	spec.start_m = btVector3(0, 0, 0);
-	spec.end_m = btVector3(2, 0, 0);
-	spec.segments = 4;
-	spec.joint.section = rectangle(0.05, 0.10);
-	spec.joint.material = steel();
-	spec.joint.method = method;
-	return spec;
-}
+BeamSpec memberSpec(JointMethod method) { return cantileverSpec(rectangle(0.05, 0.10), method); }
 }  // namespace
 
 TEST(JitMember, IsBuiltWholeWithTheSegmentsMass)
