@@ -146,8 +146,8 @@ TEST(JitStructure, AWholePortalIsOneStaticBodyAndStandsStill)
 	expectSamePlaces(p.transforms(), before, 0.01, "jointed for 1 s");
 }
 
-// A 200 kg ball at 8 m/s at the left column's mid-height: the portal subdivides before it arrives, sways and bends, stops
-// and is merged where it stopped; hit again it subdivides again. Its plastic work after each blow is the always-jointed
+// A 200 kg ball at 8 m/s at the left column's mid-height: the portal subdivides before it arrives, sways and bends, comes to
+// rest and merges where it stopped; hit again it subdivides again. Its plastic work after each blow is the always-jointed
 // portal's within 5 %.
 TEST(JitStructure, APortalHitTwiceBendsAsTheJointedOne)
 {
@@ -166,13 +166,10 @@ TEST(JitStructure, APortalHitTwiceBendsAsTheJointedOne)
 				work[blow][k++] = p->plasticWork_j();
 			}
 			EXPECT_EQ(jit.structure->subdivisions(), blow + 1) << name;
-			// stopped (every body slower than 0.1 mm/s), it is merged by hand: the toolkit's direct solver keeps a portal
-			// that has yielded creeping at about 3e-5 m/s (Baumgarte's targets in a closed loop, rounded away every step),
-			// so its bodies never fall asleep and mergeIfAtRest would wait; a cantilever (JitMember) merges by itself
-			for (const btRigidBody* body : jit.structure->bodies()) EXPECT_LT(body->getLinearVelocity().length(), 1e-4) << name;
-			jit.structure->merge();
-			EXPECT_EQ(jit.structure->merges(), blow + 2) << name;
-			EXPECT_LT(jit.structure->mergeLoss_j(), 1e-3) << name << ": the kinetic energy it had then";
+			// asleep, it merged by itself (before patch 0035 the direct solver kept a portal that had yielded creeping at
+			// 3e-5 m/s for ever, and it never did)
+			EXPECT_EQ(jit.structure->merges(), blow + 2) << name << ": merged at rest after the blow";
+			EXPECT_EQ(jit.structure->mergeLoss_j(), 0.0) << name << ": asleep, its bodies had no kinetic energy";
 			EXPECT_GT(work[blow][1], (blow ? work[0][1] : 0.0) + 100.0) << name << ": the blow yields the jointed portal";
 			EXPECT_NEAR(work[blow][0], work[blow][1], 0.05 * work[blow][1]) << name << ", blow " << blow + 1;
 			// merged where it stopped: it stays there
