@@ -2,6 +2,7 @@
 // installed Bullet, then lists the shared Bullet libraries the process has loaded (none when linked statically).
 #include <btBulletDynamicsCommon.h>
 #include <link.h>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 
@@ -83,14 +84,14 @@ static double portalSway(double loadRatio)
 		world.removeRigidBody(body);
 		delete body;
 	}
-	return fallbacks == 0 && mechanism ? sway : -1;
+	return fallbacks == 0 && mechanism ? sway : std::nan("");  // NaN fails every check below
 }
 
 int main()
 {
 	const double holds = portalSway(0.9), sways = portalSway(1.1);
 	std::printf("portal frame under btDirectJointSolver: the knee moves %g m at 0.9 of the sway collapse load, %g m at 1.1\n", holds, sways);
-	if (!(holds >= 0 && holds < 1e-3 && sways > 0.05))
+	if (!(std::fabs(holds) < 1e-3 && sways > 0.05))
 		return 1;
 
 	btDefaultCollisionConfiguration configuration;
