@@ -9,10 +9,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <memory>
 #include <vector>
 
 #include "btBulletDynamicsCommon.h"
+#include "BulletCollision/CollisionDispatch/btSimulationIslandManager.h"
 
 namespace
 {
@@ -172,4 +174,101 @@ TEST(DirectJointSolver, BeamClampedAtBothEndsHoldsBelowCollapseAndFormsThreeHing
 	EXPECT_EQ(fall.yielded, 3);
 	EXPECT_GE(fall.load_work_j + 1e-6, 0.99 * fall.booked_j);  // no energy gained
 	EXPECT_EQ(fall.fallbacks, 0);
+}
+
+namespace
+{
+// btDirectJointSolver with its answer for each joint, recorded in the call that solved it (the world calls the solver
+// once more at the end of a step, with nothing)
+class LoopProbeSolver : public btDirectJointSolver
+{
+public:
+	bool splits(const btTypedConstraint& joint) const
+	{
+		const auto it = m_splitting.find(&joint);
+		return it != m_splitting.end() && it->second;
+	}
+
+protected:
+	btScalar solveGroupCacheFriendlySetup(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
+										  btTypedConstraint** constraints, int numConstraints, const btContactSolverInfo& info, btIDebugDraw* debugDrawer) override
+	{
+		const btScalar r = btDirectJointSolver::solveGroupCacheFriendlySetup(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, info, debugDrawer);
+		for (int i = 0; i < numConstraints; i++) m_splitting[constraints[i]] = splitsPositionCorrection(*constraints[i]);
+		return r;
+	}
+
+private:
+	std::map<const btTypedConstraint*, bool> m_splitting;
+};
+}  // namespace
+
+// Patch 0035: the plastic joints on a closed loop have their position errors corrected without momentum, the others
+// keep Baumgarte's bias. In one call (islands not split): a portal (ground, column, beam, column, ground: every joint on
+// the loop), a chain of two hanging from its beam (bridges), a cantilever of two on the ground (bridges), two hinges
+// between the same two bodies (a loop of two), and a portal closed through a kinematic body instead of the ground.
+TEST(DirectJointSolver, OnlyTheJointsOfClosedLoopsCorrectPositionsWithoutMomentum)
+{
+	btDefaultCollisionConfiguration configuration;
+	btCollisionDispatcher dispatcher(&configuration);
+	btDbvtBroadphase broadphase;
+	LoopProbeSolver solver;
+	btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
+	world.getSimulationIslandManager()->setSplitIslands(false);
+	world.setGravity(btVector3(0, 0, 0));
+	btBoxShape shape(btVector3(0.1f, 0.1f, 0.1f));
+	std::vector<std::unique_ptr<btRigidBody>> bodies;
+	auto body = [&](const btVector3& at, double mass)
+	{
+		btVector3 inertia(0, 0, 0);
+		if (mass > 0) shape.calculateLocalInertia(btScalar(mass), inertia);
+		btRigidBody::btRigidBodyConstructionInfo info(btScalar(mass), nullptr, &shape, inertia);
+		info.m_startWorldTransform = btTransform(btQuaternion::getIdentity(), at);
+		bodies.push_back(std::make_unique<btRigidBody>(info));
+		world.addRigidBody(bodies.back().get(), 0, 0);
+		return bodies.back().get();
+	};
+	std::vector<std::unique_ptr<btPlasticHingeConstraint>> joints;
+	const btVector3 axis(0, 0, 1);
+	auto join = [&](btRigidBody* a, btRigidBody* b, const btVector3& pivot)
+	{
+		if (b)
+			joints.push_back(std::make_unique<btPlasticHingeConstraint>(*a, *b, a->getCenterOfMassTransform().inverse() * pivot,
+																	  b->getCenterOfMassTransform().inverse() * pivot, axis, axis));
+		else
+			joints.push_back(std::make_unique<btPlasticHingeConstraint>(*a, a->getCenterOfMassTransform().inverse() * pivot, axis));
+		joints.back()->setPlasticMoment(1000);
+		world.addConstraint(joints.back().get(), true);
+		return joints.back().get();
+	};
+	btRigidBody* left = body(btVector3(0, 1, 0), 10);
+	btRigidBody* beam = body(btVector3(1, 2, 0), 10);
+	btRigidBody* right = body(btVector3(2, 1, 0), 10);
+	const std::vector<btTypedConstraint*> portal = {join(left, nullptr, btVector3(0, 0, 0)), join(left, beam, btVector3(0, 2, 0)),
+													join(beam, right, btVector3(2, 2, 0)), join(right, nullptr, btVector3(2, 0, 0))};
+	btRigidBody* c = body(btVector3(1, 1.5f, 0), 10);
+	btRigidBody* d = body(btVector3(1, 1, 0), 10);
+	const std::vector<btTypedConstraint*> hanging = {join(beam, c, btVector3(1, 1.75f, 0)), join(c, d, btVector3(1, 1.25f, 0))};
+	btRigidBody* e = body(btVector3(5, 0.5f, 0), 10);
+	btRigidBody* f = body(btVector3(5, 1.5f, 0), 10);
+	const std::vector<btTypedConstraint*> cantilever = {join(e, nullptr, btVector3(5, 0, 0)), join(e, f, btVector3(5, 1, 0))};
+	btRigidBody* g = body(btVector3(8, 0.5f, 0), 10);
+	btRigidBody* h = body(btVector3(8, 1.5f, 0), 10);
+	const std::vector<btTypedConstraint*> twoHinges = {join(g, h, btVector3(8, 1, 0)), join(g, h, btVector3(8, 1, 0))};
+	btRigidBody* kinematic = body(btVector3(11, 3, 0), 10);
+	kinematic->setCollisionFlags(kinematic->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+	btRigidBody* k = body(btVector3(11, 1.5f, 0), 10);
+	const std::vector<btTypedConstraint*> throughKinematic = {join(k, nullptr, btVector3(11, 0, 0)), join(k, kinematic, btVector3(11, 3, 0))};
+	world.stepSimulation(btScalar(1.0 / 240.0), 0);
+	for (const btTypedConstraint* j : portal) EXPECT_TRUE(solver.splits(*j)) << "a joint of the portal";
+	for (const btTypedConstraint* j : twoHinges) EXPECT_TRUE(solver.splits(*j)) << "two hinges between the same bodies";
+	for (const btTypedConstraint* j : throughKinematic) EXPECT_TRUE(solver.splits(*j)) << "a loop through a kinematic body";
+	for (const btTypedConstraint* j : hanging) EXPECT_FALSE(solver.splits(*j)) << "a chain hanging from the portal";
+	for (const btTypedConstraint* j : cantilever) EXPECT_FALSE(solver.splits(*j)) << "a cantilever";
+	// without split impulse, none
+	world.getSolverInfo().m_splitImpulse = 0;
+	world.stepSimulation(btScalar(1.0 / 240.0), 0);
+	for (const btTypedConstraint* j : portal) EXPECT_FALSE(solver.splits(*j)) << "m_splitImpulse off";
+	for (auto& j : joints) world.removeConstraint(j.get());
+	for (auto& b : bodies) world.removeRigidBody(b.get());
 }
