@@ -17,7 +17,9 @@
 #   summary.txt, result.json, hysteresis.svg   the structures runner (cycles to break beside Coffin-Manson's)
 #   frames/frame<n>.png                       the ExampleBrowser app through OSMesa, every 15th 60 Hz frame
 # and the city (100 steel frames, 10 hit by wrecking balls) run just in time, jointed and rigid in one run to
-# build/city-report/: summary.txt, result.json (each mode's costs and energies, and their ratios)
+# build/city-report/: summary.txt, result.json (each mode's costs and energies, and their ratios), and the City example
+#   (9 buildings, 3 hit) rendered in each mode: frames-jit/, frames-jointed/, frames-rigid/ (every third 60 Hz frame),
+#   city.gif (just in time) and city-modes.gif (the three side by side, scaled to 0.6)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash ci/deps.sh
@@ -82,4 +84,12 @@ rm -rf "$city"
 mkdir -p "$city"
 "$build/bin/city" --buildings=100 --hit=10 --mode=all | tee "$city/summary.txt"
 "$build/bin/city" --buildings=100 --hit=10 --mode=all --json > "$city/result.json.tmp" && mv "$city/result.json.tmp" "$city/result.json"
-echo "report written to $city/ (summary.txt, result.json)"
+for mode in jit jointed rigid; do
+	demo=City
+	[ "$mode" = jit ] || demo="City $mode"
+	mkdir -p "$city/frames-$mode"
+	(cd "$city/frames-$mode" && "$bin/plasticity_browser" --window_backend=osmesa "--start_demo_name=$demo" --nogui \
+		--png_file=frame --png_skip_frames=2 --fixed_timestep=0.0166667 --max_frames=180 --width=720 --height=540 >/dev/null)
+done
+python3 ci/city_pictures.py --frames="$city/frames-jit,$city/frames-jointed,$city/frames-rigid" --out-dir="$city" --fps=20 --scale=0.6
+echo "report written to $city/ (summary.txt, result.json, frames-*/, city.gif, city-modes.gif)"

@@ -57,6 +57,13 @@ const ExampleEntry kPlasticityExamples[] = {
 	 "The wrecking ball hits a steel frame of five storeys and four bays (200 plastic joints in one island), "
 	 "solved by btDirectJointSolver at 60 Hz frames. build/bin/wrecking_ball --storeys=5 --bays=4 runs it.",
 	 BuildingExampleCreateFunc, 0},
+	{1, "City",
+	 "Steel frames on a grid, the first few hit by wrecking balls, simulated just in time: each building is one static "
+	 "body until a blow that can yield it comes, then its jointed self, and one body again once at rest. Choose jit, "
+	 "jointed or rigid to compare. build/bin/city --mode=all runs the three.",
+	 CityExampleCreateFunc, 0},
+	{1, "City jointed", "The city with every building always jointed.", CityExampleCreateFunc, 2},
+	{1, "City rigid", "The city with every building one rigid body: no plastic joints (the balls bounce off).", CityExampleCreateFunc, 3},
 };
 }  // namespace
 

@@ -17,6 +17,7 @@
 #include "CommonInterfaces/CommonRenderInterface.h"
 
 #include "CharpyControls.h"
+#include "CityControls.h"
 #include "SceneControls.h"
 #include "StructureView.h"
 #include "ViewFraming.h"
@@ -64,12 +65,18 @@ public:
 	void renderScene() override
 	{
 		if (windowSize() != m_framedSize) resetCamera();
+		if (m_scene && m_scene->worldChanges() != m_shownWorldChanges)
+		{
+			// bodies entered or left the world (a structure made one body, or its jointed self again): show it anew
+			m_shownWorldChanges = m_scene->worldChanges();
+			showStructure(m_guiHelper, *m_scene);
+		}
 		if (m_scene)
 		{
 			colourStructure(m_guiHelper, *m_scene);
 			m_guiHelper->syncPhysicsToGraphics(&m_scene->world());
 			m_guiHelper->render(&m_scene->world());
-			drawJointMarkers(m_guiHelper, *m_scene);
+			drawJointMarkers(m_guiHelper, *m_scene, m_kind.joint_marker_px);
 		}
 		if (CommonGraphicsApp* app = m_guiHelper->getAppInterface())
 			drawTextLines(app, m_scene ? scene::ledgerText(m_scene->ledger()) : m_kind.name + ": invalid parameters:\n" + m_error, m_framing.ledger_left_px,
@@ -165,6 +172,7 @@ private:
 			return;
 		}
 		showStructure(m_guiHelper, *m_scene);
+		m_shownWorldChanges = m_scene->worldChanges();
 		// room for the ledger as it starts, the status lines the run adds (collapse, stop, broken joints) and longer numbers
 		const ScreenRect start = textRect(scene::ledgerText(m_scene->ledger()), 0, 0);
 		m_ledgerLines = (start.height() - kTextLineHeight_px) / kTextLine_px + 1 + kLedgerStatusLines;
@@ -187,6 +195,7 @@ private:
 	int m_ledgerCharacters = 40;
 	SceneFraming m_framing;
 	std::pair<int, int> m_framedSize{0, 0};
+	long m_shownWorldChanges = 0;
 };
 }  // namespace
 
@@ -223,4 +232,9 @@ CommonExampleInterface* WreckingBallExampleCreateFunc(CommonExampleOptions& opti
 CommonExampleInterface* BuildingExampleCreateFunc(CommonExampleOptions& options)
 {
 	return new SceneExample(options.m_guiHelper, game::buildingControls(), options.m_option);
+}
+
+CommonExampleInterface* CityExampleCreateFunc(CommonExampleOptions& options)
+{
+	return new SceneExample(options.m_guiHelper, game::cityControls(), options.m_option);
 }

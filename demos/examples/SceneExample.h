@@ -15,3 +15,5 @@ CommonExampleInterface* DropWeightExampleCreateFunc(CommonExampleOptions& option
 CommonExampleInterface* PaperClipExampleCreateFunc(CommonExampleOptions& options);
 CommonExampleInterface* WreckingBallExampleCreateFunc(CommonExampleOptions& options);
 CommonExampleInterface* BuildingExampleCreateFunc(CommonExampleOptions& options);
+// options.m_option: the mode 1-3 (jit, jointed, rigid); 0 = jit
+CommonExampleInterface* CityExampleCreateFunc(CommonExampleOptions& options);

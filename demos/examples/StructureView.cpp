@@ -1,5 +1,7 @@
 #include "StructureView.h"
 
+#include <algorithm>
+
 #include "CommonInterfaces/CommonGUIHelperInterface.h"
 #include "CommonInterfaces/CommonGraphicsAppInterface.h"
 #include "CommonInterfaces/CommonRenderInterface.h"
@@ -17,8 +19,10 @@ namespace
 const float* rgbaOf(JointColour c) { return c == JointColour::Broken ? kBrokenRgba : c == JointColour::Yielded ? kYieldedRgba
 																											   : kSteelRgba; }
 
-const float* colourOf(const btCollisionObject* object, const std::map<const btRigidBody*, JointColour>& states)
+const float* colourOf(const btCollisionObject* object, const std::map<const btRigidBody*, JointColour>& states,
+					 const std::vector<const btCollisionObject*>& wholeStructures)
 {
+	if (std::find(wholeStructures.begin(), wholeStructures.end(), object) != wholeStructures.end()) return kSteelRgba;
 	const btRigidBody* body = btRigidBody::upcast(object);
 	if (!body || body->getInvMass() == 0) return kStaticBodyRgba;
 	const auto it = states.find(body);
@@ -48,10 +52,19 @@ void showStructure(GUIHelperInterface* guiHelper, scene::SteppedScene& scene)
 	guiHelper->removeAllGraphicsInstances();
 	btDiscreteDynamicsWorld& world = scene.world();
 	const auto states = bodyStates(scene.joints());
+	const std::vector<const btCollisionObject*> whole = scene.wholeStructures();
+	// the graphics shapes and instances went with removeAllGraphicsInstances: a body shown before (a scene whose bodies
+	// enter and leave the world) gets new ones
 	for (int i = 0; i < world.getNumCollisionObjects(); i++)
 	{
 		btCollisionObject* object = world.getCollisionObjectArray()[i];
-		const float* rgba = colourOf(object, states);
+		object->setUserIndex(-1);
+		object->getCollisionShape()->setUserIndex(-1);
+	}
+	for (int i = 0; i < world.getNumCollisionObjects(); i++)
+	{
+		btCollisionObject* object = world.getCollisionObjectArray()[i];
+		const float* rgba = colourOf(object, states, whole);
 		guiHelper->createCollisionShapeGraphicsObject(object->getCollisionShape());
 		guiHelper->createCollisionObjectGraphicsObject(object, btVector4(rgba[0], rgba[1], rgba[2], rgba[3]));
 	}
@@ -61,28 +74,30 @@ void colourStructure(GUIHelperInterface* guiHelper, scene::SteppedScene& scene)
 {
 	const std::vector<scene::JointView> joints = scene.joints();
 	const auto states = bodyStates(joints);
+	const std::vector<const btCollisionObject*> whole = scene.wholeStructures();
 	btDiscreteDynamicsWorld& world = scene.world();
 	for (int i = 0; i < world.getNumCollisionObjects(); i++)
 	{
 		const btCollisionObject* object = world.getCollisionObjectArray()[i];
 		if (object->getUserIndex() < 0) continue;
-		const float* rgba = colourOf(object, states);
+		const float* rgba = colourOf(object, states, whole);
 		const double colour[4] = {rgba[0], rgba[1], rgba[2], rgba[3]};
 		guiHelper->changeRGBAColor(object->getUserIndex(), colour);
 	}
 }
 
-void drawJointMarkers(GUIHelperInterface* guiHelper, scene::SteppedScene& scene)
+void drawJointMarkers(GUIHelperInterface* guiHelper, scene::SteppedScene& scene, float size_px)
 {
 	const std::vector<scene::JointView> joints = scene.joints();
 	CommonRenderInterface* renderer = guiHelper->getRenderInterface();
 	if (!renderer) return;
 	for (const scene::JointView& j : joints)
 	{
+		if (j.body_b && !j.body_b->getBroadphaseHandle()) continue;  // out of the world: a whole structure's
 		const float* rgba = j.broken ? kBrokenRgba : j.yielded ? kYieldedRgba
 															   : kElasticMarkerRgba;
 		// in front of the member (the cameras look along -z), so the depth test does not hide it inside the body
 		const float position[4] = {float(j.pivot_m.x()), float(j.pivot_m.y()), float(j.pivot_m.z() + kMarkerOffset_m), 1};
-		renderer->drawPoint(position, rgba, 12);
+		renderer->drawPoint(position, rgba, size_px);
 	}
 }

@@ -1,6 +1,6 @@
 // How a structure scene is shown: the colour of each body by the state of the joints at its ends (elastic, yielded,
 // broken), a marker at every joint pivot in the same colours (the ledger's text and the camera: ViewFraming.h). Reads
-// the scene; changes nothing.
+// the scene; changes nothing but the bodies' and shapes' user indices, which are the graphics' (as in upstream's examples).
 #pragma once
 
 #include <map>
@@ -33,5 +33,6 @@ std::map<const btRigidBody*, JointColour> bodyStates(const std::vector<scene::Jo
 void showStructure(GUIHelperInterface* guiHelper, scene::SteppedScene& scene);
 // recolour the bodies (before the world is synced and rendered)
 void colourStructure(GUIHelperInterface* guiHelper, scene::SteppedScene& scene);
-// a point at every joint pivot in its state's colour, 0.15 m towards +z (after the world is rendered)
-void drawJointMarkers(GUIHelperInterface* guiHelper, scene::SteppedScene& scene);
+// a point of size_px at every joint pivot in its state's colour, 0.15 m towards +z (after the world is rendered); none
+// at the joints of a whole structure (their bodies out of the world)
+void drawJointMarkers(GUIHelperInterface* guiHelper, scene::SteppedScene& scene, float size_px);

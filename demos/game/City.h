@@ -9,10 +9,12 @@
 // balls' energy, the plastic work, and the most bodies and joints the world held.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "WreckingBall.h"
+#include "scene/SteppedScene.h"
 
 namespace game
 {
@@ -56,6 +58,33 @@ struct CityResult
 	double simulated_s = 0;
 	double wall_s = 0;  // stepping only
 	bool finite = true;
+};
+
+// The city, one 60 Hz frame per step() (each frame: the solver settings' internal steps, each one timed: the
+// just-in-time checks, the step). The console runner, the tests and the ExampleBrowser example step this class.
+class CityScene : public scene::SteppedScene
+{
+public:
+	explicit CityScene(const CityParameters& p);  // throws std::invalid_argument naming a bad parameter
+	~CityScene() override;
+	void step() override;
+	bool done() const override;
+	double time_s() const override;
+	btDiscreteDynamicsWorld& world() override;
+	// every building's joints (a whole building's too: its bodies are out of the world, where they stopped)
+	std::vector<scene::JointView> joints() const override;
+	scene::SceneLedger ledger() const override;
+	scene::WorldBox viewEnvelope() const override;
+	// the buildings' merges and subdivisions so far: bodies have entered or left the world when it changes
+	long worldChanges() const override;
+	// the whole buildings' static bodies (jit and rigid)
+	std::vector<const btCollisionObject*> wholeStructures() const override;
+	CityResult result() const;  // measured now (the medians over the steps so far)
+	const CityParameters& parameters() const;
+
+private:
+	struct State;
+	std::unique_ptr<State> m;
 };
 
 // Builds the city, steps it to the end, measures.

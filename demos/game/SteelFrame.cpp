@@ -18,7 +18,7 @@ plastic::BeamSpec SteelFrame::memberSpec(const SteelFrameSpec& spec, const btVec
 	return member;
 }
 
-SteelFrame::SteelFrame(btDiscreteDynamicsWorld& world, const SteelFrameSpec& spec, btRigidBody& ground, double internalStep_s) : m_world(world)
+SteelFrame::SteelFrame(btDiscreteDynamicsWorld& world, const SteelFrameSpec& spec, btRigidBody& ground, double internalStep_s) : m_world(world), m_spec(spec)
 {
 	const btScalar L = btScalar(spec.span_m), h = btScalar(spec.height_m);
 	const btVector3 o = spec.origin_m;
@@ -95,6 +95,35 @@ std::vector<const plastic::Joint*> SteelFrame::joints() const
 			for (const auto& member : row)
 				for (const plastic::Joint& j : member->joints()) all.push_back(&j);
 	for (const plastic::Joint& j : m_endJoints) all.push_back(&j);
+	return all;
+}
+
+std::vector<SteelFrameJoint> SteelFrame::frameJoints() const
+{
+	std::vector<SteelFrameJoint> all;
+	auto addMember = [&all](const plastic::Beam& member, const btRigidBody* support, const std::string& prefix)
+	{
+		for (size_t j = 0; j < member.joints().size(); j++)
+			all.push_back({&member.joints()[j], j == 0 ? support : member.segments()[j - 1], member.segments()[j], member.jointSpecs()[j].pivot_m,
+						   prefix + "-" + std::to_string(j)});
+	};
+	const btScalar L = btScalar(m_spec.span_m), h = btScalar(m_spec.height_m);
+	size_t end = 0;
+	for (size_t k = 0; k < m_beams.size(); k++)
+	{
+		for (size_t c = 0; c < m_columns.size(); c++)
+			addMember(*m_columns[c][k], k == 0 ? nullptr : m_columns[c][k - 1]->segments().back(),
+					  "column-" + std::to_string(c) + "-" + std::to_string(k + 1));
+		for (size_t b = 0; b < m_beams[k].size(); b++)
+		{
+			const plastic::Beam& beam = *m_beams[k][b];
+			const std::string prefix = "beam-" + std::to_string(k + 1) + "-" + std::to_string(b + 1);
+			addMember(beam, m_columns[b][k]->segments().back(), prefix);
+			if (beam.segments().empty()) continue;  // refused: no end joint either
+			all.push_back({&m_endJoints[end++], beam.segments().back(), m_columns[b + 1][k]->segments().back(),
+						   m_spec.origin_m + btVector3(L * btScalar(b + 1), h * btScalar(k + 1), 0), prefix + "-end"});
+		}
+	}
 	return all;
 }
 

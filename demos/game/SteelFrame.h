@@ -5,6 +5,7 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "plastic/BeamBuilder.h"
@@ -27,6 +28,18 @@ struct SteelFrameSpec
 
 // the collision group of every frame's bodies (they collide with other groups, not with each other)
 const int kSteelFrameGroup = 1 << 6;
+
+// One joint of a frame: the bodies it joins (a null: the ground), where it was built and its name: column-C-K-J (column
+// line C from 0, storey K from 1, joint J of the member from its foot; J = 0 at a foot is the base), beam-K-B-J (floor
+// K, bay B from 1, J from the left node), beam-K-B-end (at the right node)
+struct SteelFrameJoint
+{
+	const plastic::Joint* joint = nullptr;
+	const btRigidBody* a = nullptr;
+	const btRigidBody* b = nullptr;
+	btVector3 pivot_m{0, 0, 0};
+	std::string name;
+};
 
 class SteelFrame
 {
@@ -51,12 +64,16 @@ public:
 	std::vector<btRigidBody*> bodies() const;
 	std::vector<btTypedConstraint*> constraints() const;
 	std::vector<const plastic::Joint*> joints() const;
+	// every joint with its bodies, storey by storey: the columns' (line by line, from the foot), then each bay's beam
+	// (from the left) and its end joint
+	std::vector<SteelFrameJoint> frameJoints() const;
 	// the least energy that yields one of its joints (plastic::jointYieldEnergy_j)
 	double yieldEnergy_j() const;
 	double plasticWork_j() const;
 
 private:
 	btDiscreteDynamicsWorld& m_world;
+	SteelFrameSpec m_spec;
 	std::vector<std::vector<std::unique_ptr<plastic::Beam>>> m_columns;
 	std::vector<std::vector<std::unique_ptr<plastic::Beam>>> m_beams;
 	std::vector<plastic::JointSpec> m_endSpecs;

@@ -125,59 +125,22 @@ WreckingBallScene::WreckingBallScene(const WreckingBallParameters& p)
 	btDiscreteDynamicsWorld& world = s.structure.world();
 	world.setGravity(btVector3(0, btScalar(-p.gravity_m_s2), 0));
 	const btScalar L = btScalar(p.span_m), h = btScalar(p.height_m);
-	const int lines = p.bays + 1;
 	s.groundShape = std::make_unique<btBoxShape>(btVector3(std::max(btScalar(20), L * btScalar(p.bays)), 0.5, 20));
 	s.ground = makeBody(0, *s.groundShape, btTransform(btMatrix3x3::getIdentity(), btVector3(btScalar(p.span_m * p.bays / 2), -0.5, 0)));
 	world.addRigidBody(s.ground.get());
 
-	// a joint of the frame: the bodies it joins (nullptr: the ground), where, and its name
-	struct FrameJoint
-	{
-		const plastic::Joint* joint;
-		const btRigidBody* a;
-		const btRigidBody* b;
-		btVector3 pivot;
-		std::string name;
-	};
-	std::vector<FrameJoint> frame;
-	const bool portal = p.storeys == 1 && p.bays == 1;
-	auto addMember = [&](const plastic::Beam& member, const btRigidBody* support, const std::string& prefix)
-	{
-		for (size_t j = 0; j < member.joints().size(); j++)
-		{
-			const btRigidBody* a = j == 0 ? support : member.segments()[j - 1];
-			frame.push_back({&member.joints()[j], a, member.segments()[j], member.jointSpecs()[j].pivot_m, prefix + "-" + std::to_string(j)});
-		}
-	};
 	for (const plastic::BeamSpec& member : {SteelFrame::memberSpec(s.frameSpec(), btVector3(0, 0, 0), btVector3(0, h, 0), p.column_segments),
 											 SteelFrame::memberSpec(s.frameSpec(), btVector3(0, h, 0), btVector3(L, h, 0), p.beam_segments)})
 		scene::requireValid(member);
 	s.steel = std::make_unique<SteelFrame>(world, s.frameSpec(), *s.ground, p.solver.internal_step_s);
-	const SteelFrame& steel = *s.steel;
-	for (int k = 0; k < p.storeys; k++)
-	{
-		for (int c = 0; c < lines; c++)
-		{
-			const btRigidBody* support = k == 0 ? nullptr : steel.columns()[size_t(c)][size_t(k - 1)]->segments().back();
-			addMember(*steel.columns()[size_t(c)][size_t(k)], support, "column-" + std::to_string(c) + "-" + std::to_string(k + 1));
-		}
-		for (int b = 0; b < p.bays; b++)
-		{
-			const btRigidBody* left = steel.columns()[size_t(b)][size_t(k)]->segments().back();
-			const btRigidBody* right = steel.columns()[size_t(b + 1)][size_t(k)]->segments().back();
-			const plastic::Beam& beam = *steel.beams()[size_t(k)][size_t(b)];
-			const std::string prefix = "beam-" + std::to_string(k + 1) + "-" + std::to_string(b + 1);
-			addMember(beam, left, prefix);
-			frame.push_back({&steel.endJoints()[size_t(k * p.bays + b)], beam.segments().back(), right, btVector3(L * btScalar(b + 1), h * btScalar(k + 1), 0), prefix + "-end"});
-		}
-	}
-
+	std::vector<SteelFrameJoint> frame = s.steel->frameJoints();
+	const bool portal = p.storeys == 1 && p.bays == 1;
 	if (portal)
 	{
 		// the portal's joints along the frame, named as the frame's joints always were: base-left, column-left-1..,
 		// knee-left, beam-1.., knee-right, column-right-1.. (from the knee down), base-right
 		const int n = p.column_segments, m = p.beam_segments;
-		std::vector<FrameJoint> along;
+		std::vector<SteelFrameJoint> along;
 		for (int j = 0; j < n; j++) along.push_back(frame[size_t(j)]);
 		for (int j = 0; j <= m; j++) along.push_back(frame[size_t(2 * n + j)]);
 		for (int j = n - 1; j >= 0; j--) along.push_back(frame[size_t(n + j)]);
@@ -196,11 +159,11 @@ WreckingBallScene::WreckingBallScene(const WreckingBallParameters& p)
 	}
 	else
 	{
-		for (FrameJoint& j : frame)
+		for (SteelFrameJoint& j : frame)
 			if (j.name.size() > 2 && j.name.compare(0, 7, "column-") == 0 && j.a == nullptr) j.name = "base-" + j.name.substr(7, j.name.find('-', 7) - 7);
 	}
 	std::vector<const btRigidBody*> bodies = {nullptr};
-	for (const FrameJoint& j : frame)
+	for (const SteelFrameJoint& j : frame)
 	{
 		s.joints.push_back(j.joint);
 		s.names.push_back(j.name);
@@ -210,10 +173,10 @@ WreckingBallScene::WreckingBallScene(const WreckingBallParameters& p)
 	for (const btRigidBody* body : bodies) s.bodyAngles.push_back(std::make_unique<scene::PlanarAngle>(body));
 	auto angleOf = [&](const btRigidBody* body)
 	{ return s.bodyAngles[size_t(std::find(bodies.begin(), bodies.end(), body) - bodies.begin())].get(); };
-	for (const FrameJoint& j : frame)
+	for (const SteelFrameJoint& j : frame)
 	{
 		s.angles.push_back({angleOf(j.a), angleOf(j.b)});
-		s.sites.push_back(scene::jointSite(*j.joint, j.a, *j.b, j.pivot));
+		s.sites.push_back(scene::jointSite(*j.joint, j.a, *j.b, j.pivot_m));
 	}
 	for (const plastic::Joint* j : s.joints) s.ledger.addJoint(*j);
 	s.measuredAtBreak.assign(s.joints.size(), std::nan(""));

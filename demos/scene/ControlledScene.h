@@ -35,6 +35,7 @@ struct ControlledScene
 	float camera_yaw_deg = 180;  // from +z
 	float camera_pitch_deg = 0;
 	float time_scale = 1;  // simulated seconds per browser second
+	float joint_marker_px = 12;  // the size of the dot at each joint
 };
 
 // the starting values of a scene's sliders

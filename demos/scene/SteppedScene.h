@@ -61,6 +61,12 @@ public:
 	// The box every body stays in over the whole run, collapse and after (from the parameters: the structure's bounds
 	// and the reach of its mechanism): what the examples keep in view. Not the ground slab.
 	virtual WorldBox viewEnvelope() const = 0;
+	// A count that changes whenever bodies have entered or left the world since the scene was built (a structure made
+	// one body or its jointed self again): the examples then show the world's bodies again. 0 for a scene whose world
+	// keeps its bodies.
+	virtual long worldChanges() const { return 0; }
+	// Static bodies that stand for whole structures (shown in the structure's colour, not the supports'): none here.
+	virtual std::vector<const btCollisionObject*> wholeStructures() const { return {}; }
 };
 
 // A scene of Parameters stepped until it is done, and its result() then (what the console runners print).

@@ -55,3 +55,20 @@ TEST(City, BadParametersAreNamed)
 	EXPECT_EQ(e[0], "hit: 11 is not in [0, 10]");
 	EXPECT_EQ(e[1].rfind("spacing: 3 is not in [", 0), 0u) << e[1];
 }
+
+// The ledger the example shows: the hit buildings' joints' Mp x rotations, measured from their bodies, against what the
+// joints booked, in every mode that has joints; the balls' descent against the energy it went to.
+TEST(City, TheLedgerMeasuresWhatTheJointsBooked)
+{
+	for (CityMode mode : {CityMode::JustInTime, CityMode::Jointed})
+	{
+		CityScene scene(city(mode));
+		while (!scene.done()) scene.step();
+		const scene::SceneLedger l = scene.ledger();
+		std::printf("[ info     ] %s: booked %.1f J, Mp x rotations %.1f J, the balls' descent %.1f J, kinetic %.1f J\n", cityModeName(mode), l.plastic_booked_j,
+					l.plastic_measured_j, l.load_work_j, l.kinetic_j);
+		EXPECT_GT(l.plastic_booked_j, 1000.0) << cityModeName(mode);
+		EXPECT_NEAR(l.plastic_measured_j, l.plastic_booked_j, 0.02 * l.plastic_booked_j) << cityModeName(mode);
+		EXPECT_LT(l.plastic_booked_j + l.kinetic_j, 1.01 * l.load_work_j) << cityModeName(mode) << ": no energy from nothing";
+	}
+}

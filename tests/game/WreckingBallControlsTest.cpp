@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+
+#include "CityControls.h"
 #include "WreckingBallControls.h"
 
 using namespace game;
@@ -51,4 +55,43 @@ TEST(BuildingControls, StartAtFiveStoreysAndFourBaysAndEveryRangeBuilds)
 			values[i] = v;
 			EXPECT_NO_THROW(scene.build(values, "plastic-hinge")) << scene.sliders[i].label << " = " << v;
 		}
+}
+
+// The city example: its method choice is the mode; it starts just in time with nine buildings, three hit, the
+// runner's building and ball; every slider's range builds (with no more buildings hit than there are: more is
+// refused by name, and the example shows the message).
+TEST(CityControls, StartJustInTimeAndEveryRangeBuilds)
+{
+	const scene::ControlledScene scene = cityControls();
+	const std::vector<float> start = scene::initialValues(scene);
+	const CityParameters p = cityFromSliders(start, scene.method);
+	const CityParameters d;
+	EXPECT_EQ(p.mode, CityMode::JustInTime);
+	EXPECT_EQ(p.buildings, 9);
+	EXPECT_EQ(p.hit, 3);
+	EXPECT_EQ(p.spacing_m, d.spacing_m);
+	EXPECT_FLOAT_EQ(float(p.building.release_angle_rad), float(d.building.release_angle_rad));
+	EXPECT_EQ(p.building.ball_mass_kg, d.building.ball_mass_kg);
+	for (const std::string& mode : scene.methods) EXPECT_NO_THROW(scene.build(start, mode)) << mode;
+	EXPECT_THROW(cityFromSliders(start, "fast"), std::invalid_argument);
+	for (size_t i = 0; i < scene.sliders.size(); i++)
+		for (float v : {scene.sliders[i].min, scene.sliders[i].max})
+		{
+			std::vector<float> values = start;
+			values[i] = v;
+			if (std::string(scene.sliders[i].label) == "hit") values[0] = std::max(v, 1.0f);        // buildings
+			if (std::string(scene.sliders[i].label) == "buildings") values[1] = std::min(values[1], v);  // hit
+			EXPECT_NO_THROW(scene.build(values, scene.method)) << scene.sliders[i].label << " = " << v;
+		}
+	std::vector<float> values = start;
+	values[1] = values[0] + 1;
+	try
+	{
+		scene.build(values, scene.method);
+		ADD_FAILURE() << "more hit buildings than buildings built";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("hit: 10 is not in [0, 9]"), std::string::npos) << e.what();
+	}
 }
