@@ -11,10 +11,10 @@ file, then renamed).
 """
 import argparse
 import csv
-import glob
 import os
-import re
 import sys
+
+import frames  # ci/frames.py
 
 import matplotlib
 
@@ -77,23 +77,6 @@ def moment_plot(h, path):
     save(fig, path)
 
 
-def animation(frames_dir, path, fps):
-    from PIL import Image
-
-    def index(p):
-        m = re.search(r"(\d+)\.png$", p)
-        return int(m.group(1)) if m else -1
-
-    files = sorted(glob.glob(os.path.join(frames_dir, "*.png")), key=index)
-    if not files:
-        raise SystemExit(f"charpy_pictures: no PNG frames in {frames_dir}")
-    images = [Image.open(f).convert("P", palette=Image.ADAPTIVE, colors=128) for f in files]
-    tmp = path + ".tmp.gif"
-    images[0].save(tmp, save_all=True, append_images=images[1:], duration=int(1000 / fps), loop=0, optimize=True)
-    os.replace(tmp, path)
-    return len(files)
-
-
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--history", required=True)
@@ -109,7 +92,7 @@ def main(argv=None):
     moment_plot(h, os.path.join(args.out_dir, "moment-rotation.png"))
     written = ["energy.png", "moment-rotation.png"]
     if args.frames:
-        n = animation(args.frames, os.path.join(args.out_dir, "charpy.gif"), args.fps)
+        n = frames.animation(args.frames, os.path.join(args.out_dir, "charpy.gif"), args.fps, 128, "charpy_pictures")
         written.append(f"charpy.gif ({n} frames)")
     print(f"wrote {', '.join(written)} to {args.out_dir}")
 

@@ -8,28 +8,10 @@ three directories' frames side by side, left to right, frame by frame, each scal
 ledger names its mode). Every file is written whole (a temporary file, then renamed).
 """
 import argparse
-import glob
 import os
-import re
 import sys
 
-
-def frames_of(directory):
-    def index(p):
-        m = re.search(r"(\d+)\.png$", p)
-        return int(m.group(1)) if m else -1
-
-    files = sorted(glob.glob(os.path.join(directory, "*.png")), key=index)
-    if not files:
-        raise SystemExit(f"city_pictures: no PNG frames in {directory}")
-    return files
-
-
-def save_gif(images, path, fps):
-    tmp = path + ".tmp.gif"
-    palette = [im.convert("RGB").convert("P", palette=1, colors=64) for im in images]  # 1: Image.ADAPTIVE
-    palette[0].save(tmp, save_all=True, append_images=palette[1:], duration=int(round(1000 / fps)), loop=0, optimize=True)
-    os.replace(tmp, path)
+import frames  # ci/frames.py
 
 
 def main(argv=None):
@@ -48,12 +30,12 @@ def main(argv=None):
     directories = args.frames.split(",")
     if len(directories) != 3:
         raise SystemExit(f"city_pictures: --frames: {len(directories)} directories, expected 3 (jit, jointed, rigid)")
-    runs = [frames_of(d) for d in directories]
+    runs = [frames.frames_of(d, "city_pictures") for d in directories]
     count = min(len(r) for r in runs)
     if any(len(r) != count for r in runs):
         raise SystemExit("city_pictures: --frames: the directories hold " + ", ".join(str(len(r)) for r in runs) + " frames; expected as many in each")
     os.makedirs(args.out_dir, exist_ok=True)
-    save_gif([Image.open(f) for f in runs[0]], os.path.join(args.out_dir, "city.gif"), args.fps)
+    frames.save_gif([Image.open(f) for f in runs[0]], os.path.join(args.out_dir, "city.gif"), args.fps, 64)
     side = []
     for k in range(count):
         panels = [Image.open(r[k]).convert("RGB") for r in runs]
@@ -66,7 +48,7 @@ def main(argv=None):
             canvas.paste(p, (x, 0))
             x += p.width
         side.append(canvas)
-    save_gif(side, os.path.join(args.out_dir, "city-modes.gif"), args.fps)
+    frames.save_gif(side, os.path.join(args.out_dir, "city-modes.gif"), args.fps, 64)
     print(f"wrote city.gif and city-modes.gif ({count} frames each) to {args.out_dir}")
 
 

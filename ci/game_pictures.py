@@ -10,10 +10,10 @@ file, then renamed). An MP4 is not made: Debian's ffmpeg is not among the projec
 """
 import argparse
 import csv
-import glob
 import os
-import re
 import sys
+
+import frames  # ci/frames.py
 
 import matplotlib
 
@@ -89,23 +89,6 @@ def joint_plot(rows, path):
     save(fig, path)
 
 
-def animation(frames_dir, path, fps):
-    from PIL import Image
-
-    def index(p):
-        m = re.search(r"(\d+)\.png$", p)
-        return int(m.group(1)) if m else -1
-
-    files = sorted(glob.glob(os.path.join(frames_dir, "*.png")), key=index)
-    if not files:
-        raise SystemExit(f"game_pictures: no PNG frames in {frames_dir}")
-    images = [Image.open(f).convert("RGB").convert("P", palette=Image.ADAPTIVE, colors=64) for f in files]
-    tmp = path + ".tmp.gif"
-    images[0].save(tmp, save_all=True, append_images=images[1:], duration=int(round(1000 / fps)), loop=0, optimize=True)
-    os.replace(tmp, path)
-    return len(files)
-
-
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--history", required=True)
@@ -122,7 +105,7 @@ def main(argv=None):
     os.makedirs(args.out_dir, exist_ok=True)
     energy_plot(history, os.path.join(args.out_dir, "energy.png"))
     joint_plot(joints, os.path.join(args.out_dir, "joint-energy.png"))
-    n = animation(args.frames, os.path.join(args.out_dir, args.gif_name), args.fps)
+    n = frames.animation(args.frames, os.path.join(args.out_dir, args.gif_name), args.fps, 64, "game_pictures")
     print(f"wrote energy.png, joint-energy.png, {args.gif_name} ({n} frames) to {args.out_dir}")
 
 
