@@ -221,8 +221,9 @@ CityScene::CityScene(const CityParameters& p)
 		for (const btRigidBody* link : s.balls.back()->links()) s.swing.addBody(*link);
 	}
 	s.initialSwingPotential_j = s.swing.measure().potential_j;
-	s.plasticMoment_nm = wreckingBallEstimate(b).plastic_moment_nm;
-	s.r.impact_energy_j = p.hit * wreckingBallEstimate(b).release_energy_j;
+	const WreckingBallEstimate estimate = wreckingBallEstimate(b);
+	s.plasticMoment_nm = estimate.plastic_moment_nm;
+	s.r.impact_energy_j = p.hit * estimate.release_energy_j;
 	s.dt = b.solver.internal_step_s;
 	s.perFrame = std::max(1, int(std::lround(1.0 / (b.frame_rate_hz * s.dt))));
 }
@@ -297,14 +298,13 @@ scene::SceneLedger CityScene::ledger() const
 	l.title = std::string("city, ") + cityModeName(s.p.mode) + ", " + plastic::jointMethodName(s.p.building.method);
 	l.time_s = time_s();
 	l.load_work_j = s.initialSwingPotential_j - s.swing.measure().potential_j;
-	const btCollisionObjectArray& objects = const_cast<plastic::StructureWorld&>(s.structure).world().getCollisionObjectArray();
+	// every body in the world now (a whole building's are out of it, and without mass)
+	btDiscreteDynamicsWorld& world = const_cast<plastic::StructureWorld&>(s.structure).world();
+	plastic::EnergyLedger moving(world.getGravity());
+	const btCollisionObjectArray& objects = world.getCollisionObjectArray();
 	for (int i = 0; i < objects.size(); i++)
-	{
-		const btRigidBody* body = btRigidBody::upcast(objects[i]);
-		if (body && body->getInvMass() > 0)
-			l.kinetic_j += 0.5 * (body->getLinearVelocity().length2() / double(body->getInvMass()) +
-								  double(body->getAngularVelocity().dot(body->getInvInertiaTensorWorld().inverse() * body->getAngularVelocity())));
-	}
+		if (const btRigidBody* body = btRigidBody::upcast(objects[i])) moving.addBody(*body);
+	l.kinetic_j = moving.measure().kinetic_j;
 	l.plastic_booked_j = r.plastic_energy_j;
 	// a rigid-plastic joint absorbs Mp over its rotation up to its limit: a broken joint's bodies then turn freely
 	for (size_t i = 0; i < s.hitJoints.size(); i++)
@@ -315,8 +315,7 @@ scene::SceneLedger CityScene::ledger() const
 	std::snprintf(line, sizeof line, "%d buildings, %d hit: %.0f J released", s.p.buildings, s.p.hit, r.impact_energy_j);
 	l.answer.push_back(line);
 	l.answer.push_back("load: balls' descent; Mp x rot.: hit ones");
-	std::snprintf(line, sizeof line, "bodies %d, joints %d in the world now", dynamicBodies(const_cast<plastic::StructureWorld&>(s.structure).world()),
-				  const_cast<plastic::StructureWorld&>(s.structure).world().getNumConstraints());
+	std::snprintf(line, sizeof line, "bodies %d, joints %d in the world now", dynamicBodies(world), world.getNumConstraints());
 	l.status.push_back(line);
 	if (s.p.mode == CityMode::JustInTime)
 	{
