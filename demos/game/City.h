@@ -1,8 +1,8 @@
 // A city of steel frames, some hit by wrecking balls (issue 24, just-in-time subdivision): N buildings on a grid, each
 // one the wrecking ball scene's frame, the first few each hit by its own ball on a chain, at 60 Hz frames with the game
 // solver settings. Three ways to simulate the buildings:
-//   jit      one static body each (plastic::JitStructure) until a body that can yield one of its joints comes at it,
-//            then its jointed self, and one body again once it has come to rest (asleep)
+//   jit      static bodies (plastic::JitStructure, member by member) until a body that can yield a member's joints
+//            comes at it, then those members jointed, and static again once they have come to rest (asleep)
 //   jointed  always jointed (the frames may sleep when at rest, as any body)
 //   rigid    always one static body: no plastic joints at all (the balls bounce off)
 // The runner (build/bin/city) reports the cost of an internal step before the first impact and over the run, the
@@ -50,7 +50,7 @@ struct CityResult
 	int joints_max = 0;           // the most constraints in the world at once (the chains' included)
 	int idle_bodies_max = 0;      // the same before the first impact
 	int idle_joints_max = 0;
-	int subdivisions = 0;         // jit
+	int subdivisions = 0;         // jit: members subdivided and merged, one by one
 	int merges = 0;
 	double first_impact_s = 0;  // NaN: none
 	long internal_steps = 0;

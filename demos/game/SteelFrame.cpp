@@ -146,6 +146,28 @@ double SteelFrame::yieldEnergy_j() const
 	return least;
 }
 
+std::vector<std::vector<btRigidBody*>> SteelFrame::memberBodies() const
+{
+	std::vector<std::vector<btRigidBody*>> all;
+	for (const auto& group : {&m_columns, &m_beams})
+		for (const auto& row : *group)
+			for (const auto& member : row) all.push_back(member->segments());
+	return all;
+}
+
+std::vector<plastic::JitJoint> SteelFrame::jitJoints() const
+{
+	std::vector<plastic::JitJoint> all;
+	for (const auto& group : {&m_columns, &m_beams})
+		for (const auto& row : *group)
+			for (const auto& member : row)
+				for (size_t j = 0; j < member->joints().size(); j++)
+					if (member->joints()[j].constraint) all.push_back(plastic::jitJoint(member->joints()[j], member->jointSpecs()[j]));
+	for (size_t j = 0; j < m_endJoints.size(); j++)
+		if (m_endJoints[j].constraint) all.push_back(plastic::jitJoint(m_endJoints[j], m_endSpecs[j]));
+	return all;
+}
+
 double SteelFrame::plasticWork_j() const
 {
 	double w = 0;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "plastic/BeamBuilder.h"
+#include "plastic/JitStructure.h"
 
 namespace game
 {
@@ -69,6 +70,10 @@ public:
 	std::vector<SteelFrameJoint> frameJoints() const;
 	// the least energy that yields one of its joints (plastic::jointYieldEnergy_j)
 	double yieldEnergy_j() const;
+	// every member's segments (bodies() member by member) and every joint (joints()) with what yields it: the frame as a
+	// plastic::JitStructure that subdivides member by member
+	std::vector<std::vector<btRigidBody*>> memberBodies() const;
+	std::vector<plastic::JitJoint> jitJoints() const;
 	double plasticWork_j() const;
 
 private:

@@ -1,14 +1,24 @@
-// A structure anchored to static bodies (a building on the ground) that costs one static body while it is at rest and
-// nothing threatens it, and is its jointed self again just before an impact that can yield one of its joints (thesis
-// 4.2, just-in-time subdivision, for frames: members joined at nodes, fixed to the ground).
+// A structure anchored to static bodies (a building on the ground) that costs static bodies while it is at rest and
+// nothing threatens it, and is jointed again, member by member, just before an impact or a neighbour's load that can
+// yield one of its joints (thesis 4.2, just-in-time subdivision, for frames: members joined at nodes, fixed to the ground).
 //
-// Whole, its bodies (the members' segments) are static and out of the world with every one of its joints, and one static
-// body of their shapes where they are (a compound) stands in the world for contacts: the solver sees nothing of it, and
-// a structure that has come to rest is where it stopped, so nothing moves that should. Subdivided, its bodies get their
-// masses back, at rest, with its joints; the joints are the same objects throughout and keep their plastic state (set,
-// accumulated rotation, absorbed energy, fatigue damage). It merges only when Bullet has put every one of its bodies to
-// sleep (so a structure whose bodies may not sleep stays jointed once it has been hit), and the kinetic energy its
-// bodies had then, none once asleep, is booked as lost (mergeLoss_j); it is never gained.
+// A whole member's bodies (its segments) are static and out of the world with every joint that touches no subdivided
+// member, and one static body of the whole members' shapes where they are (a compound) stands in the world for contacts:
+// the solver sees nothing of them, and a member that has come to rest is where it stopped, so nothing moves that should.
+// A subdivided member's bodies have their masses back, at rest, with its joints; a joint between a subdivided member and
+// a whole one holds to the whole one as to a fixed body. The joints are the same objects throughout and keep their
+// plastic state (set, accumulated rotation, absorbed energy, fatigue damage). A member merges only when Bullet has put
+// every one of its bodies to sleep (so a member whose bodies may not sleep stays jointed once it has been hit), and the
+// kinetic energy its bodies had then, none once asleep, is booked as lost (mergeLoss_j); it is never gained.
+//
+// A blow loads the members joined to the one it hits in the step it lands, and those joined to them: those whose capacity
+// the blow's momentum over a step can reach subdivide with it (in a rigid-plastic frame, whose joints carry any force, the
+// whole frame). A load that grows over steps reaches the members one after the other: a subdivided member loads its whole
+// neighbours through the joints between them, each such joint reports the force and moment it puts on the whole member
+// (btJointFeedback), and a whole member subdivides before the step in which they can reach the least capacity of its
+// joints. The moment anywhere in the member is at most the joints' moments plus their
+// forces times the member's extent plus its own weight times its extent; the next step's is taken as this step's plus
+// its last increase.
 //
 // Where JitMember (one free or supported member) moves as one body while whole, a JitStructure does not move at all: it
 // is for what stands on the ground until something hits it.
@@ -20,44 +30,78 @@
 #include <unordered_map>
 #include <vector>
 
+#include "JointFactory.h"
 #include "btBulletDynamicsCommon.h"
 
 namespace plastic
 {
+// One joint of a JitStructure and what yields it: the least energy (jointYieldEnergy_j), the least moment (its bending
+// and torsion capacities, N m) and the least force (its axial and shear capacities, N).
+struct JitJoint
+{
+	btTypedConstraint* constraint = nullptr;
+	double yieldEnergy_j = 0;
+	double yieldMoment_nm = std::numeric_limits<double>::infinity();
+	double yieldForce_n = std::numeric_limits<double>::infinity();
+};
+// a joint made by makeJoint from spec, with the capacities of the spec
+JitJoint jitJoint(const Joint& joint, const JointSpec& spec);
+
 class JitStructure
 {
 public:
-	// bodies: the structure's dynamic bodies, in the world; joints: every joint between them and to the static bodies they
-	// stand on, in the world; yieldEnergy_j: the least energy that yields one of the joints (jointYieldEnergy_j of each
-	// joint's spec). The caller keeps owning them; the structure starts jointed (subdivided) and puts them back so when it is
-	// destroyed.
+	// members: the bodies of each member, in the world (a body in no member is a support, static); joints: every joint
+	// between them and to the static bodies they stand on, in the world. A member's capacities are the least of the joints
+	// that touch it. The caller keeps owning them; the structure starts jointed (subdivided) and puts them back so when it
+	// is destroyed.
+	JitStructure(btDiscreteDynamicsWorld& world, std::vector<std::vector<btRigidBody*>> members, const std::vector<JitJoint>& joints);
+	// One member of them all, every joint yielding at yieldEnergy_j (the least energy that yields one of them), no
+	// neighbours: the whole structure subdivides and merges at once.
 	JitStructure(btDiscreteDynamicsWorld& world, std::vector<btRigidBody*> bodies, std::vector<btTypedConstraint*> joints, double yieldEnergy_j);
 	~JitStructure();
 	JitStructure(const JitStructure&) = delete;
 	JitStructure& operator=(const JitStructure&) = delete;
 
-	bool whole() const { return m_whole; }
-	// the static body that stands in the world for the structure while whole, nullptr when subdivided
-	const btRigidBody* wholeBody() const { return m_whole ? m_wholeBody.get() : nullptr; }
+	// every member whole
+	bool whole() const { return m_wholeMembers == int(m_members.size()); }
+	int members() const { return int(m_members.size()); }
+	bool memberWhole(int member) const { return m_members[size_t(member)].whole; }
+	const std::vector<btRigidBody*>& memberBodies(int member) const { return m_members[size_t(member)].bodies; }
+	// the static body that stands in the world for the whole members, nullptr when none is
+	const btRigidBody* wholeBody() const { return m_wholeBody.get(); }
+	// every member's, member by member
 	const std::vector<btRigidBody*>& bodies() const { return m_bodies; }
 
-	// Makes it whole now, wherever and however fast its bodies are (their kinetic energy is booked as lost).
+	// Makes every member whole now, wherever and however fast its bodies are (their kinetic energy is booked as lost).
 	void merge();
-	// Makes it jointed again: its bodies at rest where they are, its joints in the world.
+	// Makes every member jointed again: their bodies at rest where they are, their joints in the world.
 	void subdivide();
-	// Before a step: subdivides the whole structure when a body whose swept box reaches it within lookahead_s can bring
-	// more than yieldEnergy_j to it (threatens). Returns whether it subdivided. It looks at every body of the world; many
-	// structures in one world use a JitStructureSet, which looks only at the bodies that move.
-	bool subdivideIfThreatened(double lookahead_s);
-	// Whether other, wherever it is, can bring more than yieldEnergy_j to the whole structure: 1/2 m v^2 with v its closing
-	// speed (its centre's velocity towards the nearest point of the structure's box, all of it from inside the box) and
-	// its spin over half its own box (the structure does not move while whole); a moving kinematic body always can.
+	void subdivideMember(int member);
+	// Before a step: subdivides each whole member that a body whose swept box reaches it within lookahead_s can bring more
+	// than its yield energy to (threatens), or that its subdivided neighbours can yield in the step. Returns how many
+	// members subdivided. It looks at every body of the world; many structures in one world use a JitStructureSet, which
+	// looks only at the bodies that move.
+	int subdivideIfThreatened(double lookahead_s);
+	// Whether other, wherever it is, can bring more than its yield energy to a whole member: 1/2 m v^2 with v its closing
+	// speed (its centre's velocity towards the nearest point of the member's box, all of it from inside the box) and its
+	// spin over half its own box (the member does not move while whole); a moving kinematic body always can. A body that
+	// does not collide with the structure (by the collision filter) cannot.
 	bool threatens(const btRigidBody& other) const;
-	// After a step: merges the structure when every one of its bodies is asleep. Returns whether it merged.
-	bool mergeIfAtRest();
+	// Marks the whole members that mover, its box swept by its fastest point's speed over lookahead_s, reaches and
+	// threatens, and, through their joints and on through those of the members it marks, the whole members whose least
+	// capacity the force of its whole momentum over lookahead_s can reach (over a member's extent, for a moment); the next
+	// subdivideMarked subdivides them. Returns how many it marked.
+	int markThreatened(const btRigidBody& mover, double lookahead_s);
+	// Subdivides the marked members and the whole members its subdivided ones can yield in the step (above). Returns how
+	// many subdivided.
+	int subdivideMarked();
+	// After a step: merges each subdivided member whose bodies are all asleep. Returns how many merged.
+	int mergeIfAtRest();
 
 	double mergeLoss_j() const { return m_mergeLoss_j; }
+	// the least energy that yields one of its joints
 	double yieldEnergy_j() const { return m_yieldEnergy_j; }
+	// members subdivided and merged so far, one by one
 	int subdivisions() const { return m_subdivisions; }
 	int merges() const { return m_merges; }
 
@@ -68,15 +112,47 @@ private:
 		btVector3 inertia{0, 0, 0};
 		int group = 0, mask = 0;  // its collision filter in the world
 	};
+	struct Member
+	{
+		std::vector<btRigidBody*> bodies;
+		std::vector<Saved> saved;
+		std::vector<int> nodeJoints;  // indices of the joints between it and another member
+		double yieldEnergy_j = std::numeric_limits<double>::infinity();
+		double yieldMoment_nm = std::numeric_limits<double>::infinity();
+		double yieldForce_n = std::numeric_limits<double>::infinity();
+		double mass_kg = 0;
+		btVector3 boxMin{0, 0, 0}, boxMax{0, 0, 0};  // while whole
+		double extent_m = 0;                         // while whole: its box's diagonal
+		double lastMoment_nm = 0, lastForce_n = 0;   // the neighbours' bounds at the last check
+		bool whole = false;
+		bool marked = false;
+	};
+	struct JointSlot
+	{
+		JitJoint joint;
+		int memberA = -1, memberB = -1;  // -1: a support
+		bool disableCollisions = false;  // as it was added to the world
+		bool inWorld = true;
+		bool ownFeedback = false;
+	};
+	void init(std::vector<std::vector<btRigidBody*>> members, const std::vector<JitJoint>& joints);
+	// makes member i whole where toWhole[i], subdivided elsewhere
+	void transition(const std::vector<bool>& toWhole);
+	bool threatensMember(const Member& member, const btRigidBody& other) const;
+	bool collides(const btRigidBody& other) const;
+	// marks the whole members its subdivided neighbours can yield in the next step
+	void markLoaded();
+
 	btDiscreteDynamicsWorld& m_world;
+	std::vector<Member> m_members;
+	std::vector<JointSlot> m_joints;
+	std::vector<btJointFeedback> m_feedback;  // one per joint (used by the node joints without one of their own)
 	std::vector<btRigidBody*> m_bodies;
-	std::vector<btTypedConstraint*> m_joints;
-	std::vector<bool> m_jointsDisableCollisions;  // as they were added to the world
-	std::vector<Saved> m_saved;
-	double m_yieldEnergy_j;
+	double m_yieldEnergy_j = std::numeric_limits<double>::infinity();
 	std::unique_ptr<btCompoundShape> m_wholeShape;
 	std::unique_ptr<btRigidBody> m_wholeBody;
-	bool m_whole = false;
+	int m_wholeMembers = 0;
+	int m_marked = 0;
 	double m_mergeLoss_j = 0;
 	int m_subdivisions = 0;
 	int m_merges = 0;
@@ -96,17 +172,17 @@ public:
 	}
 	const std::vector<JitStructure*>& structures() const { return m_structures; }
 	// Before a step: every awake dynamic (or moving kinematic) body's box, swept by its fastest point's speed over
-	// lookahead_s, against the whole structures' bodies in the broadphase; each structure it reaches and threatens
-	// subdivides. Returns how many did.
+	// lookahead_s, against the whole structures' bodies in the broadphase; each member it reaches and threatens subdivides,
+	// and each whole member that its subdivided neighbours can yield. Returns how many members did.
 	int subdivideThreatened(double lookahead_s);
-	// After a step: merges every subdivided structure whose bodies are all asleep. Returns how many did.
+	// After a step: merges every subdivided member whose bodies are all asleep. Returns how many did.
 	int mergeAtRest();
 
 private:
 	btDiscreteDynamicsWorld& m_world;
 	std::vector<JitStructure*> m_structures;
 	double m_leastYield_j = std::numeric_limits<double>::infinity();  // of them all: a body with less energy threatens none
-	std::unordered_map<const void*, JitStructure*> m_wholeBodies;     // the whole ones' bodies
+	std::unordered_map<const void*, JitStructure*> m_wholeBodies;     // the static bodies of their whole members
 	long m_transitions = -1;                                          // their merges and subdivisions when it was made
 };
 }  // namespace plastic
