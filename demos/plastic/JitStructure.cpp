@@ -132,8 +132,11 @@ void JitStructure::transition(const std::vector<bool>& toWhole)
 		m_wholeBody.reset();
 		m_wholeShape.reset();
 	}
+	// a joint of no member's bodies is left as it is
 	auto belongs = [&toWhole](const JointSlot& s)
-	{ return (s.memberA >= 0 && !toWhole[size_t(s.memberA)]) || (s.memberB >= 0 && !toWhole[size_t(s.memberB)]); };
+	{
+		return (s.memberA < 0 && s.memberB < 0) || (s.memberA >= 0 && !toWhole[size_t(s.memberA)]) || (s.memberB >= 0 && !toWhole[size_t(s.memberB)]);
+	};
 	for (JointSlot& s : m_joints)
 		if (s.inWorld && !belongs(s))
 		{
@@ -190,12 +193,15 @@ void JitStructure::transition(const std::vector<bool>& toWhole)
 			m_wholeMembers--;
 			m_subdivisions++;
 		}
-		m.marked = false;
 	}
+	for (Member& m : m_members) m.marked = false;
 	m_marked = 0;
 	for (JointSlot& s : m_joints)
 		if (!s.inWorld && belongs(s))
 		{
+			// its loads of the last step it was solved in are not this step's
+			if (btJointFeedback* fb = s.joint.constraint->getJointFeedback())
+				for (btVector3* v : {&fb->m_appliedForceBodyA, &fb->m_appliedTorqueBodyA, &fb->m_appliedForceBodyB, &fb->m_appliedTorqueBodyB}) v->setZero();
 			m_world.addConstraint(s.joint.constraint, s.disableCollisions);
 			s.inWorld = true;
 		}
@@ -205,11 +211,11 @@ void JitStructure::transition(const std::vector<bool>& toWhole)
 	for (const Member& m : m_members)
 	{
 		if (!m.whole) continue;
-		if (!first) first = &m;
+		if (!first && !m.bodies.empty()) first = &m;
 		for (const btRigidBody* b : m.bodies) m_wholeShape->addChildShape(b->getCenterOfMassTransform(), const_cast<btCollisionShape*>(b->getCollisionShape()));
 	}
 	btRigidBody::btRigidBodyConstructionInfo info(0, nullptr, m_wholeShape.get());
-	if (!first->bodies.empty())
+	if (first)
 	{
 		info.m_friction = first->bodies.front()->getFriction();
 		info.m_restitution = first->bodies.front()->getRestitution();
@@ -222,7 +228,7 @@ void JitStructure::transition(const std::vector<bool>& toWhole)
 		if (s.inWorld && s.memberA >= 0 && s.memberB >= 0 && m_members[size_t(s.memberA)].whole != m_members[size_t(s.memberB)].whole)
 			m_wholeBody->setIgnoreCollisionCheck(m_members[size_t(s.memberA)].whole ? &s.joint.constraint->getRigidBodyB() : &s.joint.constraint->getRigidBodyA(), true);
 	// with its bodies' collision filter, so that it meets what they would
-	if (first->saved.empty())
+	if (!first)
 		m_world.addRigidBody(m_wholeBody.get());
 	else
 		m_world.addRigidBody(m_wholeBody.get(), first->saved.front().group, first->saved.front().mask);
@@ -339,6 +345,7 @@ void JitStructure::markLoaded()
 			// an asleep neighbour's feedback is of the step it fell asleep in: it loads nothing now
 			if (m_members[size_t(other)].whole || !s.joint.constraint->isEnabled() || !otherBody.isActive()) continue;
 			const btJointFeedback* fb = s.joint.constraint->getJointFeedback();
+			if (!fb) continue;
 			const btVector3& F = onA ? fb->m_appliedForceBodyA : fb->m_appliedForceBodyB;
 			const btVector3& T = onA ? fb->m_appliedTorqueBodyA : fb->m_appliedTorqueBodyB;
 			moment += double(T.length()) + double(F.length()) * m.extent_m;

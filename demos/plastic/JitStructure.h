@@ -52,7 +52,7 @@ class JitStructure
 public:
 	// members: the bodies of each member, in the world (a body in no member is a support, static); joints: every joint
 	// between them and to the static bodies they stand on, in the world. A member's capacities are the least of the joints
-	// that touch it. The caller keeps owning them; the structure starts jointed (subdivided) and puts them back so when it
+	// that touch it; a joint between no member's bodies is left as it is. The caller keeps owning them; the structure starts jointed (subdivided) and puts them back so when it
 	// is destroyed.
 	JitStructure(btDiscreteDynamicsWorld& world, std::vector<std::vector<btRigidBody*>> members, const std::vector<JitJoint>& joints);
 	// One member of them all, every joint yielding at yieldEnergy_j (the least energy that yields one of them), no
