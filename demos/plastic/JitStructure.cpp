@@ -172,7 +172,7 @@ void JitStructure::transition(const std::vector<bool>& toWhole)
 				b.setCompanionId(-1);
 			}
 			m.extent_m = double((m.boxMax - m.boxMin).length());
-			m.lastMoment_nm = m.lastForce_n = 0;
+			m.loadChecked = false;
 			m.whole = true;
 			m_wholeMembers++;
 			m_merges++;
@@ -351,8 +351,10 @@ void JitStructure::markLoaded()
 			moment += double(T.length()) + double(F.length()) * m.extent_m;
 			force += double(F.length());
 		}
-		const double nextMoment = moment + std::max(0.0, moment - m.lastMoment_nm) + m.mass_kg * g * m.extent_m;
-		const double nextForce = force + std::max(0.0, force - m.lastForce_n) + m.mass_kg * g;
+		// (a member that merged at rest under its neighbours' loads holds them: no increase at its first check)
+		const double nextMoment = moment + (m.loadChecked ? std::max(0.0, moment - m.lastMoment_nm) : 0.0) + m.mass_kg * g * m.extent_m;
+		const double nextForce = force + (m.loadChecked ? std::max(0.0, force - m.lastForce_n) : 0.0) + m.mass_kg * g;
+		m.loadChecked = true;
 		m.lastMoment_nm = moment;
 		m.lastForce_n = force;
 		if (moment > 0 && (nextMoment >= m.yieldMoment_nm || nextForce >= m.yieldForce_n))
@@ -393,6 +395,7 @@ int JitStructure::subdivideIfThreatened(double lookahead_s)
 
 int JitStructure::mergeIfAtRest()
 {
+	if (whole()) return 0;  // (most structures of a city, every step)
 	std::vector<bool> toWhole;
 	int count = 0;
 	for (const Member& m : m_members)
@@ -402,7 +405,7 @@ int JitStructure::mergeIfAtRest()
 		toWhole.push_back(m.whole || asleep);
 		count += asleep ? 1 : 0;
 	}
-	transition(toWhole);
+	if (count > 0) transition(toWhole);
 	return count;
 }
 

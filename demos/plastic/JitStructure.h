@@ -124,6 +124,7 @@ private:
 		btVector3 boxMin{0, 0, 0}, boxMax{0, 0, 0};  // while whole
 		double extent_m = 0;                         // while whole: its box's diagonal
 		double lastMoment_nm = 0, lastForce_n = 0;   // the neighbours' bounds at the last check
+		bool loadChecked = false;                    // since it was last made whole
 		bool whole = false;
 		bool marked = false;
 	};

@@ -73,3 +73,41 @@ TEST(City, TheLedgerMeasuresWhatTheJointsBooked)
 		EXPECT_LT(l.plastic_booked_j + l.kinetic_j, 1.01 * l.load_work_j) << cityModeName(mode) << ": no energy from nothing";
 	}
 }
+
+// The hit buildings' permanent sets: every joint's plastic rotation and every segment's displacement, just in time against
+// always jointed, within 5 % of the largest of the building (measured from the bodies where they stopped; a whole
+// member's bodies are out of the world where they stopped).
+TEST(City, JustInTimeLeavesTheJointedCitysSets)
+{
+	CityScene jit(city(CityMode::JustInTime)), jointed(city(CityMode::Jointed));
+	const std::vector<scene::JointView> before = jointed.joints();
+	std::vector<btVector3> start;
+	for (const scene::JointView& j : before) start.push_back(j.body_b->getCenterOfMassPosition());
+	while (!jit.done()) jit.step();
+	while (!jointed.done()) jointed.step();
+	const std::vector<scene::JointView> a = jit.joints(), b = jointed.joints();
+	ASSERT_EQ(a.size(), b.size());
+	const size_t perBuilding = a.size() / size_t(city(CityMode::Jointed).buildings);
+	for (int building = 0; building < city(CityMode::Jointed).hit; building++)
+	{
+		double largestRotation = 0, largestMove = 0;
+		for (size_t i = building * perBuilding; i < (building + 1) * perBuilding; i++)
+		{
+			largestRotation = std::max(largestRotation, std::fabs(b[i].plastic_rotation_rad));
+			largestMove = std::max(largestMove, double((b[i].body_b->getCenterOfMassPosition() - start[i]).length()));
+		}
+		ASSERT_GT(largestRotation, 0.01) << "building " << building << " is bent";
+		double worstRotation = 0, worstMove = 0;
+		for (size_t i = building * perBuilding; i < (building + 1) * perBuilding; i++)
+		{
+			worstRotation = std::max(worstRotation, std::fabs(a[i].plastic_rotation_rad - b[i].plastic_rotation_rad));
+			const btVector3 moveJit = a[i].body_b->getCenterOfMassPosition() - start[i], moveJointed = b[i].body_b->getCenterOfMassPosition() - start[i];
+			worstMove = std::max(worstMove, double((moveJit - moveJointed).length()));
+		}
+		std::printf("[ info     ] building %d: largest plastic rotation %.4f rad, differs by at most %.2e rad; largest move %.4f m, differs by at most %.2e m\n",
+					building, largestRotation, worstRotation, largestMove, worstMove);
+		EXPECT_LE(worstRotation, 0.05 * largestRotation) << "building " << building;
+		EXPECT_LE(worstMove, 0.05 * largestMove) << "building " << building;
+	}
+}
+
