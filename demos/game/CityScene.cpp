@@ -322,7 +322,7 @@ scene::SceneLedger CityScene::ledger() const
 	l.status.push_back(line);
 	if (s.p.mode == CityMode::JustInTime)
 	{
-		std::snprintf(line, sizeof line, "%d subdivided, %d merged", r.subdivisions, r.merges);
+		std::snprintf(line, sizeof line, "%d members subdivided, %d merged", r.subdivisions, r.merges);
 		l.status.push_back(line);
 	}
 	// no wall-clock figure on screen: the frames are the same bytes run to run (the runner reports the costs)

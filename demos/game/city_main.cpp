@@ -93,7 +93,7 @@ int main(int argc, char** argv)
 			o << "city, " << game::cityModeName(modes[k]) << ": " << p.buildings << " buildings, " << p.hit << " hit; " << r.internal_steps << " internal steps in "
 			  << r.wall_s << " s (median step " << r.step_us << " us, before the first impact " << r.idle_step_us << " us)\n  balls' energy " << r.impact_energy_j
 			  << " J, plastic work " << r.plastic_energy_j << " J; at most " << r.bodies_max << " bodies and " << r.joints_max << " joints in the world; "
-			  << r.subdivisions << " subdivisions, " << r.merges << " merges\n";
+			  << r.subdivisions << " member subdivisions, " << r.merges << " member merges\n";
 	}
 	if (all)
 	{
