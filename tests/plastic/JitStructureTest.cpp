@@ -365,6 +365,52 @@ TEST(JitStructure, AFrameSubdividesMemberByMember)
 	}
 }
 
+// A joint among the structure's joints whose bodies are in none of its members (a sign hung from a post on the ground) is
+// left as it is: in the world whole or subdivided, once; the members' joints leave and come back.
+TEST(JitStructure, AJointOfNoMembersBodiesIsLeftAsItIs)
+{
+	StruckPortal p(JointMethod::PlasticHinge, false, false);
+	btBoxShape signShape(btVector3(0.2f, 0.2f, 0.02f));
+	btVector3 inertia;
+	signShape.calculateLocalInertia(5, inertia);
+	btRigidBody::btRigidBodyConstructionInfo info(5, nullptr, &signShape, inertia);
+	info.m_startWorldTransform = btTransform(btQuaternion::getIdentity(), btVector3(-3, 2, 0));
+	btRigidBody sign(info);
+	p.w.world().addRigidBody(&sign);
+	btPoint2PointConstraint hanger(sign, p.ground, btVector3(0, 0.2f, 0), btVector3(-3, 2.7f, 0));
+	p.w.world().addConstraint(&hanger, true);
+	std::vector<JitJoint> joints;
+	for (const Beam* m : {p.columnLeft.get(), p.beam.get(), p.columnRight.get()})
+		for (size_t j = 0; j < m->joints().size(); j++) joints.push_back(jitJoint(m->joints()[j], m->jointSpecs()[j]));
+	joints.push_back(jitJoint(p.base, p.baseSpec));
+	JitJoint other;
+	other.constraint = &hanger;
+	joints.push_back(other);
+	p.structure.reset();
+	{
+		JitStructure structure(p.w.world(), {p.columnLeft->segments(), p.beam->segments(), p.columnRight->segments()}, joints);
+		auto count = [&](const btTypedConstraint* c)
+		{
+			int n = 0;
+			for (int i = 0; i < p.w.world().getNumConstraints(); i++) n += p.w.world().getConstraint(i) == c ? 1 : 0;
+			return n;
+		};
+		EXPECT_EQ(p.w.world().getNumConstraints(), 11);
+		structure.merge();
+		EXPECT_EQ(p.w.world().getNumConstraints(), 1) << "the members' joints left";
+		EXPECT_EQ(count(&hanger), 1);
+		structure.subdivideMember(1);
+		EXPECT_EQ(count(&hanger), 1);
+		structure.subdivide();
+		EXPECT_EQ(p.w.world().getNumConstraints(), 11);
+		EXPECT_EQ(count(&hanger), 1);
+	}
+	EXPECT_EQ(p.w.world().getNumConstraints(), 11) << "destroyed, the structure left its joints in the world";
+	p.w.world().removeConstraint(&hanger);
+	p.w.world().removeRigidBody(&sign);
+	p.structure = std::make_unique<JitStructure>(p.w.world(), std::vector<btRigidBody*>{}, std::vector<btTypedConstraint*>{}, 0.0);
+}
+
 // A blow carries its force through the joints in the step it lands: the whole portal subdivides before the ball
 // reaches it, and books the always-jointed portal's plastic work.
 TEST(JitStructure, ABlowSubdividesTheMembersItLoads)
