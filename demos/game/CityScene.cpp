@@ -87,7 +87,6 @@ struct CityScene::State
 	std::vector<std::unique_ptr<SteelFrame>> frames;
 	std::vector<std::unique_ptr<plastic::JitStructure>> jit;
 	std::unique_ptr<plastic::JitStructureSet> set;
-	int initialMerges = 0;
 	std::vector<std::unique_ptr<Pendulum>> balls;
 	plastic::EnergyLedger swing{btVector3(0, 0, 0)};  // the balls and their chains (their descent is the load's work)
 	double initialSwingPotential_j = 0;
@@ -211,7 +210,6 @@ CityScene::CityScene(const CityParameters& p)
 		{
 			s.jit.push_back(std::make_unique<plastic::JitStructure>(world, steel.memberBodies(), steel.jitJoints()));
 			s.jit.back()->merge();
-			s.initialMerges += s.jit.back()->merges();
 			s.set->add(*s.jit.back());
 		}
 	}
@@ -285,9 +283,8 @@ CityResult CityScene::result() const
 	for (const auto& s : m->jit)
 	{
 		r.subdivisions += s->subdivisions();
-		r.merges += s->merges();
+		r.merges += s->merges() - s->members();  // not the ones that made each member whole at the start
 	}
-	r.merges -= m->initialMerges;  // not the ones that made them whole at the start
 	for (const auto& f : m->frames)
 		for (const btRigidBody* body : f->bodies()) r.finite = r.finite && std::isfinite(double(body->getCenterOfMassPosition().length()));
 	return r;

@@ -21,6 +21,9 @@ struct Energies
 	double mechanical_j() const { return kinetic_j + potential_j + elastic_j; }
 };
 
+// 1/2 m v^2 + 1/2 w I w of a body (J); 0 for a static body
+double kineticEnergy_j(const btRigidBody& body);
+
 class EnergyLedger
 {
 public:

@@ -1,5 +1,7 @@
 #include "JitStructure.h"
 
+#include "EnergyLedger.h"
+
 #include <algorithm>
 #include <unordered_map>
 
@@ -154,9 +156,7 @@ void JitStructure::transition(const std::vector<bool>& toWhole)
 			for (size_t k = 0; k < m.bodies.size(); k++)
 			{
 				btRigidBody& b = *m.bodies[k];
-				const btVector3 v = b.getLinearVelocity(), w = b.getAngularVelocity();
-				const btMatrix3x3& R = b.getCenterOfMassTransform().getBasis();
-				m_mergeLoss_j += 0.5 * double(m.saved[k].mass * v.length2() + w.dot(R.scaled(m.saved[k].inertia) * (R.transpose() * w)));
+				m_mergeLoss_j += kineticEnergy_j(b);
 				btVector3 lo, hi;
 				b.getAabb(lo, hi);
 				m.boxMin.setMin(lo);
@@ -275,38 +275,23 @@ bool JitStructure::threatensMember(const Member& member, const btRigidBody& othe
 	return 0.5 * speed * speed / double(other.getInvMass()) > member.yieldEnergy_j;
 }
 
-bool JitStructure::threatens(const btRigidBody& other) const
-{
-	if (!collides(other)) return false;
-	for (const Member& m : m_members)
-		if (threatensMember(m, other)) return true;
-	return false;
-}
-
 int JitStructure::markThreatened(const btRigidBody& mover, double lookahead_s)
 {
 	if (m_wholeMembers == 0 || &mover == m_wholeBody.get() || !collides(mover)) return 0;
 	btVector3 moverMin, moverMax;
 	mover.getAabb(moverMin, moverMax);
-	const btScalar reach = fastestPointSpeed(mover, moverMin, moverMax) * btScalar(lookahead_s);
+	const btScalar speed = fastestPointSpeed(mover, moverMin, moverMax);
+	const btScalar reach = speed * btScalar(lookahead_s);
 	const btVector3 r(reach, reach, reach);
 	// the most force it can put on a member it hits within the lookahead: all its momentum in one step (a moving kinematic
 	// body any force)
-	const double force_n = mover.isKinematicObject() ? std::numeric_limits<double>::infinity()
-													 : double(fastestPointSpeed(mover, moverMin, moverMax)) / double(mover.getInvMass()) / lookahead_s;
+	const double force_n = mover.isKinematicObject() ? std::numeric_limits<double>::infinity() : double(speed) / double(mover.getInvMass()) / lookahead_s;
 	int marked = 0;
-	auto mark = [&](Member& m)
-	{
-		if (m.marked) return;
-		m.marked = true;
-		m_marked++;
-		marked++;
-	};
 	std::vector<Member*> reached;
 	for (Member& m : m_members)
 		if (threatensMember(m, mover) && TestAabbAgainstAabb2(m.boxMin - r, m.boxMax + r, moverMin, moverMax))
 		{
-			mark(m);
+			marked += mark(m);
 			reached.push_back(&m);
 		}
 	// the whole members the blow loads through the joints of those it hits, in the step it lands (a joint's force is not
@@ -319,13 +304,21 @@ int JitStructure::markThreatened(const btRigidBody& mover, double lookahead_s)
 		for (int j : m.nodeJoints)
 		{
 			const JointSlot& s = m_joints[size_t(j)];
-			Member& other = m_members[size_t(&m_members[size_t(s.memberA)] == &m ? s.memberB : s.memberA)];
+			Member& other = m_members[size_t(s.memberA == memberIndex(m) ? s.memberB : s.memberA)];
 			if (!other.whole || other.marked || !(force_n * other.extent_m >= other.yieldMoment_nm || force_n >= other.yieldForce_n)) continue;
-			mark(other);
+			marked += mark(other);
 			reached.push_back(&other);
 		}
 	}
 	return marked;
+}
+
+bool JitStructure::mark(Member& member)
+{
+	if (member.marked) return false;
+	member.marked = true;
+	m_marked++;
+	return true;
 }
 
 void JitStructure::markLoaded()
@@ -339,7 +332,7 @@ void JitStructure::markLoaded()
 		for (int j : m.nodeJoints)
 		{
 			const JointSlot& s = m_joints[size_t(j)];
-			const bool onA = s.memberA >= 0 && &m_members[size_t(s.memberA)] == &m;
+			const bool onA = s.memberA == memberIndex(m);
 			const int other = onA ? s.memberB : s.memberA;
 			const btRigidBody& otherBody = onA ? s.joint.constraint->getRigidBodyB() : s.joint.constraint->getRigidBodyA();
 			// an asleep neighbour's feedback is of the step it fell asleep in: it loads nothing now
@@ -357,11 +350,7 @@ void JitStructure::markLoaded()
 		m.loadChecked = true;
 		m.lastMoment_nm = moment;
 		m.lastForce_n = force;
-		if (moment > 0 && (nextMoment >= m.yieldMoment_nm || nextForce >= m.yieldForce_n))
-		{
-			m.marked = true;
-			m_marked++;
-		}
+		if (moment > 0 && (nextMoment >= m.yieldMoment_nm || nextForce >= m.yieldForce_n)) mark(m);
 	}
 }
 

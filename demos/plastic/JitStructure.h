@@ -82,13 +82,11 @@ public:
 	// members subdivided. It looks at every body of the world; many structures in one world use a JitStructureSet, which
 	// looks only at the bodies that move.
 	int subdivideIfThreatened(double lookahead_s);
-	// Whether other, wherever it is, can bring more than its yield energy to a whole member: 1/2 m v^2 with v its closing
-	// speed (its centre's velocity towards the nearest point of the member's box, all of it from inside the box) and its
-	// spin over half its own box (the member does not move while whole); a moving kinematic body always can. A body that
-	// does not collide with the structure (by the collision filter) cannot.
-	bool threatens(const btRigidBody& other) const;
 	// Marks the whole members that mover, its box swept by its fastest point's speed over lookahead_s, reaches and
-	// threatens, and, through their joints and on through those of the members it marks, the whole members whose least
+	// threatens (it can bring more than a member's yield energy to it: 1/2 m v^2 with v its closing speed, its centre's
+	// velocity towards the nearest point of the member's box, all of it from inside the box, and its spin over half its own
+	// box; a moving kinematic body always can, a body that does not collide with the structure by the collision filter
+	// cannot), and, through their joints and on through those of the members it marks, the whole members whose least
 	// capacity the force of its whole momentum over lookahead_s can reach (over a member's extent, for a moment); the next
 	// subdivideMarked subdivides them. Returns how many it marked.
 	int markThreatened(const btRigidBody& mover, double lookahead_s);
@@ -140,6 +138,9 @@ private:
 	// makes member i whole where toWhole[i], subdivided elsewhere
 	void transition(const std::vector<bool>& toWhole);
 	bool threatensMember(const Member& member, const btRigidBody& other) const;
+	int memberIndex(const Member& member) const { return int(&member - m_members.data()); }
+	// marks a member for the next subdivideMarked; false if it was marked already
+	bool mark(Member& member);
 	bool collides(const btRigidBody& other) const;
 	// marks the whole members its subdivided neighbours can yield in the next step
 	void markLoaded();

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "plastic/JitMember.h"
+#include "plastic/EnergyLedger.h"
 #include "plastic/JitStructure.h"
 #include "plastic/PointLoad.h"
 #include "plastic/SolverSettings.h"
@@ -120,10 +121,8 @@ struct StruckPortal
 		{
 			const btRigidBody* b = btRigidBody::upcast(objects[i]);
 			if (!b || !(b->getInvMass() > 0)) continue;
-			const btScalar m = 1 / b->getInvMass();
-			p += m * b->getLinearVelocity();
-			const btVector3 w = b->getAngularVelocity();
-			e += 0.5 * double(m * b->getLinearVelocity().length2() + w.dot(b->getInvInertiaTensorWorld().inverse() * w));
+			p += b->getLinearVelocity() / b->getInvMass();
+			e += kineticEnergy_j(*b);
 		}
 		return {p, e};
 	}
