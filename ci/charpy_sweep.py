@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Error against run time: the Charpy test over methods 1-8 x frame steps x solver iterations x
-contact substeps, each run by the console runner, one CSV row per run.
+contact substeps, and the plastic methods with the direct solve (--solver=direct) down to no substeps,
+each run by the console runner, one CSV row per run.
 
   ci/charpy_sweep.py [--runner=build/bin/charpy] [--out=report/charpy-sweep.csv] [--jobs=N]
                      [--shard=i/n] [--quick]
@@ -23,7 +24,11 @@ ITERATIONS = [10, 50]
 # internal step during contact, s: the default, twice it (convergence), and off (every frame step
 # taken as it is)
 CONTACT_SUBSTEP_S = [1e-5, 2e-5, 0]
-FIRST_COLUMNS = ("key", "method", "dt_ms", "auto_dt", "iterations", "contact_substep_s")
+# the direct solve (--solver=direct, btDirectJointSolver): the plastic methods at 10 iterations, with the default
+# substep and coarser ones, down to none
+DIRECT_METHODS = ["hinge-motor", "plastic-hinge", "elastic-plastic", "elastic-plastic2"]
+DIRECT_SUBSTEP_S = [1e-5, 5e-5, 1e-4, 0]
+FIRST_COLUMNS = ("key", "method", "dt_ms", "auto_dt", "iterations", "contact_substep_s", "solver")
 
 
 def configurations(quick=False):
@@ -33,24 +38,34 @@ def configurations(quick=False):
     iterations = [10] if quick else ITERATIONS
     substeps = [1e-5] if quick else CONTACT_SUBSTEP_S
     out = []
+
+    def add(method, it, sub, dt, solver):
+        flags = [f"--method={method}", f"--iterations={it}", f"--contact-substep={sub:g}"]
+        flags.append("--auto-dt" if dt == "auto" else f"--dt={dt / 1000:.10g}")
+        key = f"{method}/dt={dt}/it={it}/sub={sub:g}"
+        if solver != "sequential-impulse":
+            flags.append(f"--solver={solver}")
+            key += f"/solver={solver}"
+        out.append({
+            "key": key,
+            "method": method,
+            "dt_ms": "" if dt == "auto" else f"{dt:g}",
+            "auto_dt": "1" if dt == "auto" else "0",
+            "iterations": str(it),
+            "contact_substep_s": f"{sub:g}",
+            "solver": solver,
+            "flags": flags,
+        })
+
     for method in methods:
         for it in iterations:
             for sub in substeps:
                 for dt in steps + ["auto"]:
-                    flags = [f"--method={method}", f"--iterations={it}", f"--contact-substep={sub:g}"]
-                    if dt == "auto":
-                        flags.append("--auto-dt")
-                    else:
-                        flags.append(f"--dt={dt / 1000:.10g}")
-                    out.append({
-                        "key": f"{method}/dt={dt}/it={it}/sub={sub:g}",
-                        "method": method,
-                        "dt_ms": "" if dt == "auto" else f"{dt:g}",
-                        "auto_dt": "1" if dt == "auto" else "0",
-                        "iterations": str(it),
-                        "contact_substep_s": f"{sub:g}",
-                        "flags": flags,
-                    })
+                    add(method, it, sub, dt, "sequential-impulse")
+    for method in (["plastic-hinge"] if quick else DIRECT_METHODS):
+        for sub in ([1e-4] if quick else DIRECT_SUBSTEP_S):
+            for dt in steps + ["auto"]:
+                add(method, 10, sub, dt, "direct")
     return out
 
 

@@ -18,6 +18,9 @@ const scene::Flags<CharpyParameters>& valueFlags()
 						return m.has_value();
 					},
 					"NAME  joining method (see --list-methods), default plastic-hinge"}},
+		{"solver", {[](CharpyParameters& p, const std::string& text) { return plastic::parseSolverKind(text, p.solver); },
+					"NAME  constraint solver: sequential-impulse (upstream; default), direct (btDirectJointSolver, patch 0019: "
+					"the specimen's joints and contacts solved together), dantzig, pgs (btMLCPSolver)"}},
 		{"dt", numberFlag(&CharpyParameters::dt_s, "SECONDS  frame step, default 1e-4")},
 		{"auto-dt-coarse", numberFlag(&CharpyParameters::auto_dt_coarse_s, "SECONDS  step far from contact with --auto-dt, default 5e-3")},
 		{"contact-substep", numberFlag(&CharpyParameters::contact_substep_s, "SECONDS  internal step in/near contact, 0 = off, default 1e-5")},
@@ -91,6 +94,12 @@ CharpyCommandLine parseCharpyCommandLine(const std::vector<std::string>& argumen
 			flagWithoutValue(cl.json);
 		else if (name == "auto-dt")
 			flagWithoutValue(cl.parameters.auto_dt);
+		else if (name == "full-duration")
+		{
+			bool full = false;
+			flagWithoutValue(full);
+			cl.parameters.end_when_clear = cl.parameters.end_when_clear && !full;
+		}
 		else if (name == "geometry")
 		{
 			if (!hasValue)
@@ -121,8 +130,10 @@ CharpyCommandLine parseCharpyCommandLine(const std::vector<std::string>& argumen
 std::string charpyUsage()
 {
 	std::string text =
-		"usage: charpy [--method=NAME] [--geometry=standard|thesis] [--json] [--history=FILE.csv] [--auto-dt] [--list-methods] [flags]\n"
-		"Runs the Charpy impact test scene headless and prints the energy balance.\n"
+		"usage: charpy [--method=NAME] [--geometry=standard|thesis] [--json] [--history=FILE.csv] [--auto-dt] [--full-duration] [--list-methods] [flags]\n"
+		"Runs the Charpy impact test scene headless and prints the energy balance. The test ends once the specimen is clear\n"
+		"(every part behind the anvils, none able to touch the hammer or an anvil within a frame), or at --duration;\n"
+		"  --full-duration      runs to --duration even after the specimen is clear\n"
 		"  --geometry=thesis    (default) the thesis' scene: a flat striker nose as thick as the hammer, released from 2.8 rad\n"
 		"  --geometry=standard  the standard machine's striker (ISO 148-1): a 2 mm edge at mid-span, 5.2 m/s\n";
 	return text + scene::usageOf(valueFlags());

@@ -19,6 +19,7 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	r.dt_s = parameters.dt_s;
 	r.auto_dt = parameters.auto_dt;
 	r.iterations = parameters.solver_iterations;
+	r.solver = plastic::solverKindName(parameters.solver);
 	r.E0_J = scene.initialEnergy_j();
 	r.analytic_J = scene.section().analytic_loss_j;
 	r.theta_pass_rad = scene.section().theta_pass_rad;
@@ -34,7 +35,7 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 		*history << "time_s,potential_J,kinetic_J,elastic_J,total_J,plastic_work_J,bend_angle_rad,hammer_angle_rad\n";
 	}
 	double maxBend = 0;
-	while (scene.time_s() < parameters.duration_s - 1e-12 && scene.finite())
+	while (!scene.done() && !(parameters.end_when_clear && scene.clear()))
 	{
 		scene.step();
 		r.frames++;
@@ -48,7 +49,9 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 			*history << line;
 		}
 	}
+	r.end_time_s = scene.time_s();
 	r.internal_steps = scene.internalSteps();
+	r.solver_fallbacks = scene.solverFallbacks();
 	r.finite = scene.finite();
 	r.E_end_J = scene.energies().total_j;
 	r.energy_loss_J = r.E0_J - r.E_end_J;
@@ -95,7 +98,7 @@ std::string toJson(const CharpyResult& r)
 	std::ostringstream out;
 	auto flag = [](bool b) { return b ? "true" : "false"; };
 	out << "{\"method\":\"" << r.method << "\",\"dt\":" << number(r.dt_s) << ",\"auto_dt\":" << flag(r.auto_dt)
-		<< ",\"iterations\":" << r.iterations << ",\"steps\":" << r.internal_steps << ",\"frames\":" << r.frames
+		<< ",\"iterations\":" << r.iterations << ",\"solver\":\"" << r.solver << "\",\"solver_fallbacks\":" << r.solver_fallbacks << ",\"steps\":" << r.internal_steps << ",\"frames\":" << r.frames << ",\"end_time_s\":" << number(r.end_time_s)
 		<< ",\"wall_s\":" << number(r.wall_s) << ",\"E0_J\":" << number(r.E0_J) << ",\"E_end_J\":" << number(r.E_end_J)
 		<< ",\"energy_loss_J\":" << number(r.energy_loss_J) << ",\"plastic_work_J\":" << number(r.plastic_work_J)
 		<< ",\"other_loss_J\":" << number(r.other_loss_J) << ",\"analytic_J\":" << number(r.analytic_J)
@@ -128,11 +131,11 @@ std::string toSummary(const CharpyResult& r)
 {
 	char text[1024];
 	std::snprintf(text, sizeof text,
-				  "Charpy impact test, method %s, dt %g s%s, %d iterations: %ld internal steps in %.3f s wall time\n"
+				  "Charpy impact test, method %s, dt %g s%s, %d iterations, solver %s: %ld internal steps to %.2f ms in %.3f s wall time\n"
 				  "  hammer energy E0 %.2f J, impact speed %.3f m/s\n"
 				  "  energy loss %.2f J (plastic work %.2f J, other %.2f J); analytic Mp * theta_pass = %.2f N m * %.4f rad = %.2f J; error %+.2f %%\n"
 				  "  plastic rotation %.3f rad, broken %s, passed anvils %s%s, max energy gain %.3g J, max penetration %.3g m%s\n",
-				  r.method.c_str(), r.dt_s, r.auto_dt ? " (auto)" : "", r.iterations, r.internal_steps, r.wall_s, r.E0_J,
+				  r.method.c_str(), r.dt_s, r.auto_dt ? " (auto)" : "", r.iterations, r.solver.c_str(), r.internal_steps, 1000.0 * r.end_time_s, r.wall_s, r.E0_J,
 				  r.impact_speed_m_s, r.energy_loss_J, r.plastic_work_J, r.other_loss_J, r.plastic_moment_Nm, r.theta_pass_rad,
 				  r.analytic_J, r.error_pct, r.plastic_rotation_rad, r.broken ? "yes" : "no", r.passed_anvils ? "yes" : "no",
 				  r.tunnelled ? " (TUNNELLED: past the anvils with too little bend to fit the gap)" : "", r.max_energy_gain_J, r.max_penetration_m,

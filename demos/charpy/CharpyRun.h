@@ -12,8 +12,11 @@ struct CharpyResult
 	double dt_s = 0;
 	bool auto_dt = false;
 	int iterations = 0;
+	std::string solver;        // plastic::solverKindName of the parameters' solver
+	int solver_fallbacks = 0;  // internal steps in which a direct or MLCP solver fell back to sequential impulse
 	long frames = 0;
 	long internal_steps = 0;
+	double end_time_s = 0;  // simulated time at the end: the duration, or when the specimen was clear (end_when_clear)
 	double wall_s = 0;
 	double E0_J = 0;
 	double E_end_J = 0;

@@ -8,6 +8,7 @@
 
 #include "plastic/JointFactory.h"
 #include "plastic/Section.h"
+#include "plastic/SolverSettings.h"
 #include "plastic/SubstepPolicy.h"
 #include "btBulletDynamicsCommon.h"
 #include "BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h"
@@ -51,10 +52,11 @@ plastic::JointMethod jointMethod(CharpyMethod method)
 
 struct CharpyScene::Impl
 {
+	explicit Impl(plastic::SolverKind kind) : solver(kind) {}
 	btDefaultCollisionConfiguration collisionConfiguration;
 	btCollisionDispatcher dispatcher{&collisionConfiguration};
 	btDbvtBroadphase broadphase;
-	btSequentialImpulseConstraintSolver solver;
+	plastic::OwnedSolver solver;
 	btAlignedObjectArray<btCollisionShape*> shapes;
 	btAlignedObjectArray<btRigidBody*> bodies;
 	btAlignedObjectArray<btTypedConstraint*> constraints;
@@ -108,7 +110,7 @@ CharpyScene::CharpyScene(const CharpyParameters& parameters)
 	m_substeps = plastic::ContactSubstepPolicy(plastic::ContactSubstepSettings{parameters.contact_substep_s});
 	scene::throwIfAny(m_substeps.errors());
 	m_section = computeCharpySection(parameters);
-	m_impl = std::make_unique<Impl>();
+	m_impl = std::make_unique<Impl>(parameters.solver);
 	try
 	{
 		createWorld();
@@ -171,7 +173,7 @@ void CharpyScene::destroy()
 
 void CharpyScene::createWorld()
 {
-	m_world = std::make_unique<btDiscreteDynamicsWorld>(&m_impl->dispatcher, &m_impl->broadphase, &m_impl->solver,
+	m_world = std::make_unique<btDiscreteDynamicsWorld>(&m_impl->dispatcher, &m_impl->broadphase, m_impl->solver.get(),
 														&m_impl->collisionConfiguration);
 	m_world->setGravity(btVector3(0, btScalar(-kGravity_m_s2), 0));
 	m_world->getSolverInfo().m_numIterations = m_parameters.solver_iterations;
@@ -392,6 +394,8 @@ void CharpyScene::createHammer()
 	m_hammer->setLinearVelocity(angularVelocity.cross(comOffset));
 	m_impactSpeed_m_s = omega * armDrop;
 }
+
+int CharpyScene::solverFallbacks() const { return m_impl->solver.fallbacks(); }
 
 bool CharpyScene::nearContact(double horizon_s) const
 {

@@ -50,6 +50,8 @@ public:
 	const CharpyParameters& parameters() const { return m_parameters; }
 	const CharpySection& section() const { return m_section; }
 	long internalSteps() const { return m_internalSteps; }
+	// internal steps in which the direct or MLCP solver fell back to sequential impulse (0 for sequential impulse)
+	int solverFallbacks() const;
 	double lastFrameStep_s() const { return m_lastFrameStep_s; }
 
 	CharpyEnergies energies() const;
@@ -63,6 +65,9 @@ public:
 	double hammerAngle_rad() const;  // pendulum rotation about Z from the impact position
 	bool broken() const;
 	bool passedAnvils() const;       // every part is behind the anvils' front plane (x < 0)
+	// the test is over: every part is behind the anvils and none can touch the hammer or an anvil within a frame step
+	// (each body's box grown by how far it can travel in that time)
+	bool clear() const { return passedAnvils() && !nearContact(m_parameters.dt_s); }
 	bool overTheTop() const { return m_overTheTop; }  // a part got behind the anvils above their top, not through the gap
 	double maxPenetration_m() const { return m_maxPenetration_m; }
 	double maxSpeed_m_s() const { return m_maxSpeed_m_s; }        // fastest dynamic body, any step

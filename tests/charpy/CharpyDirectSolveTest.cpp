@@ -1,0 +1,94 @@
+// The Charpy test with btDirectJointSolver (--solver=direct, patch 0019) at internal steps without contact substeps,
+// against the converged sequential-impulse run of the same geometry (0.1 ms frames, 0.01 ms contact substeps).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "CharpyRun.h"
+
+namespace
+{
+CharpyParameters geometry(bool standard)
+{
+	CharpyParameters p;
+	if (standard)
+	{
+		applyStandardGeometry(p);
+	}
+	return p;
+}
+
+// One internal step per frame: no contact substeps.
+CharpyResult runWithoutSubsteps(bool standard, plastic::SolverKind solver, double step_s)
+{
+	CharpyParameters p = geometry(standard);
+	p.solver = solver;
+	p.dt_s = step_s;
+	p.contact_substep_s = 0;
+	return runCharpy(p);
+}
+}  // namespace
+
+// The 2 g halves lie between the 19.5 kg hammer and the anvils. Sequential impulse moves each by its mass over the
+// hammer's per iteration, so at 0.1 ms steps and more its 10 iterations let the hammer push the specimen through the
+// anvils nearly straight. The direct solve holds the specimen at every step up to 1 ms: it folds far enough to fit the
+// gap. Measured (thesis geometry, plastic hinge): plastic work 127.4, 132.9, 126.4, 130.0, 151.6 J at 0.05, 0.1, 0.2,
+// 0.5, 1 ms against the converged 128.9 J; sequential impulse 100.9, 12.5, 0, 0, 0 J.
+TEST(CharpyDirectSolve, HoldsTheSpecimenWithoutSubstepsAtEveryStepUpToOneMillisecond)
+{
+	const CharpyResult converged = runCharpy(geometry(false));
+	ASSERT_TRUE(converged.passed_anvils && !converged.tunnelled);
+	for (double step : {5e-5, 1e-4, 2e-4, 5e-4, 1e-3})
+	{
+		const CharpyResult direct = runWithoutSubsteps(false, plastic::SolverKind::DirectJoint, step);
+		EXPECT_EQ(direct.solver, "direct");
+		EXPECT_TRUE(direct.finite) << step;
+		EXPECT_TRUE(direct.passed_anvils) << step;
+		EXPECT_FALSE(direct.tunnelled) << step;
+		EXPECT_GE(direct.max_bend_rad, direct.min_pass_bend_rad) << step << ": it passed the anvils bent too little to fit the gap";
+		EXPECT_LE(direct.max_energy_gain_J, 0.01 * direct.E0_J) << step;
+		EXPECT_GT(direct.plastic_work_J, 0.9 * converged.plastic_work_J) << step;
+		if (step <= 1e-4)
+		{
+			EXPECT_NEAR(direct.plastic_work_J, converged.plastic_work_J, 0.05 * converged.plastic_work_J) << step;
+		}
+		if (step >= 1e-4)
+		{
+			const CharpyResult sequential = runWithoutSubsteps(false, plastic::SolverKind::SequentialImpulse, step);
+			EXPECT_LT(sequential.plastic_work_J, 0.5 * converged.plastic_work_J)
+				<< step << ": sequential impulse held the specimen too; this test no longer shows what the direct solve adds";
+		}
+	}
+}
+
+// The standard striker (a 2 mm edge at mid-span, 5.2 m/s): the plastic work within 5 % of the converged run at 0.05 and
+// 0.1 ms steps without substeps (measured 122.4 and 120.9 J against 120.0 J; sequential impulse 103.1 and 81.4 J).
+TEST(CharpyDirectSolve, StandardStrikerBooksTheConvergedPlasticWorkAtTenthMillisecondSteps)
+{
+	const CharpyResult converged = runCharpy(geometry(true));
+	for (double step : {5e-5, 1e-4})
+	{
+		const CharpyResult direct = runWithoutSubsteps(true, plastic::SolverKind::DirectJoint, step);
+		EXPECT_TRUE(direct.passed_anvils) << step;
+		EXPECT_FALSE(direct.tunnelled) << step;
+		EXPECT_NEAR(direct.plastic_work_J, converged.plastic_work_J, 0.05 * converged.plastic_work_J) << step;
+		const CharpyResult sequential = runWithoutSubsteps(true, plastic::SolverKind::SequentialImpulse, step);
+		EXPECT_LT(sequential.plastic_work_J, 0.9 * converged.plastic_work_J) << step;
+	}
+}
+
+// Where the direct solve is not yet enough: at coarse steps its contacts' Baumgarte correction gives the halves energy
+// (the loss falls below the plastic work the joints booked), so the energy loss is 6 to 16 % under the converged loss
+// between 0.05 and 0.5 ms (issue 25). This pins that the loss never exceeds what the joints and the converged run's
+// contacts together explain, and that the gap is the contacts' (the booked plastic work stays within 5 %).
+TEST(CharpyDirectSolve, AtCoarseStepsTheLossIsNoMoreThanTheBookedWorkExplainsAndFourFifthsOfConverged)
+{
+	const CharpyResult converged = runCharpy(geometry(false));
+	const double contactLoss = converged.energy_loss_J - converged.plastic_work_J;  // 3.8 J measured
+	for (double step : {5e-5, 1e-4, 2e-4})
+	{
+		const CharpyResult direct = runWithoutSubsteps(false, plastic::SolverKind::DirectJoint, step);
+		EXPECT_LE(direct.energy_loss_J, direct.plastic_work_J + contactLoss + 0.01 * converged.energy_loss_J) << step;
+		EXPECT_GT(direct.energy_loss_J, 0.8 * converged.energy_loss_J) << step;
+	}
+}
