@@ -105,6 +105,7 @@ def run_all(runner, configurations, out_csv, jobs, timeout_s=600, first_columns=
     keys = [c["key"] for c in configurations]
     if len(set(keys)) != len(keys):
         raise SystemExit("configurations have duplicate keys")
+    os.makedirs(os.path.dirname(os.path.abspath(out_csv)), exist_ok=True)  # a fresh build tree has no sweep folder yet
     expected_id = {c["key"]: runner_id(c.get("runner") or runner) for c in configurations}
     by_key = {}
     for r in csvfile.read_rows(out_csv) + read_journal(out_csv):  # a journal's row is newer than the CSV's
