@@ -40,7 +40,7 @@ struct CityParameters
 
 std::vector<std::string> validateCityParameters(const CityParameters& p);
 
-struct CityResult
+struct CityResult : scene::RunStats  // wall_s: stepping only; no solver fallbacks counted
 {
 	double idle_step_us = 0;  // median wall time of an internal step before the first impact
 	double step_us = 0;       // median over the run
@@ -53,11 +53,7 @@ struct CityResult
 	int subdivisions = 0;         // jit: members subdivided and merged, one by one
 	int merges = 0;
 	double first_impact_s = 0;  // NaN: none
-	long internal_steps = 0;
 	long frames = 0;
-	double simulated_s = 0;
-	double wall_s = 0;  // stepping only
-	bool finite = true;
 };
 
 // The city, one 60 Hz frame per step() (each frame: the solver settings' internal steps, each one timed: the
@@ -67,14 +63,8 @@ class CityScene : public scene::SteppedScene
 public:
 	explicit CityScene(const CityParameters& p);  // throws std::invalid_argument naming a bad parameter
 	~CityScene() override;
-	void step() override;
-	bool done() const override;
-	double time_s() const override;
-	btDiscreteDynamicsWorld& world() override;
-	// every building's joints (a whole building's too: its bodies are out of the world, where they stopped)
-	std::vector<scene::JointView> joints() const override;
-	scene::SceneLedger ledger() const override;
-	scene::WorldBox viewEnvelope() const override;
+	// joints(): every building's joints (a whole building's too: its bodies are out of the world, where they stopped)
+	SCENE_STEPPED_SCENE_OVERRIDES;
 	// the buildings' merges and subdivisions so far: bodies have entered or left the world when it changes
 	long worldChanges() const override;
 	// the whole buildings' static bodies (jit and rigid)

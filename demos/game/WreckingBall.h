@@ -90,7 +90,7 @@ struct FrameJointResult
 	double broken_at_s = -1;  // -1: not broken
 };
 
-struct WreckingBallResult
+struct WreckingBallResult : scene::RunStats  // wall_s: stepping only (not building)
 {
 	WreckingBallEstimate estimate;
 	std::vector<FrameJointResult> joints;
@@ -106,13 +106,8 @@ struct WreckingBallResult
 	int yielded_joints = 0;
 	int broken_joints = 0;
 	long frames = 0;
-	long internal_steps = 0;
-	double simulated_s = 0;
-	double wall_s = 0;            // stepping only (not building)
 	double real_time_factor = 0;  // simulated_s / wall_s
 	double max_frame_wall_s = 0;
-	int solver_fallbacks = 0;  // MLCP steps that fell back to sequential impulse
-	bool finite = true;
 };
 
 // The scene, one 60 Hz frame per step() (each frame: the solver settings' internal steps).
@@ -121,13 +116,7 @@ class WreckingBallScene : public scene::SteppedScene
 public:
 	explicit WreckingBallScene(const WreckingBallParameters& p);  // throws std::invalid_argument naming a bad parameter
 	~WreckingBallScene() override;
-	void step() override;
-	bool done() const override;
-	double time_s() const override;
-	btDiscreteDynamicsWorld& world() override;
-	std::vector<scene::JointView> joints() const override;
-	scene::SceneLedger ledger() const override;
-	scene::WorldBox viewEnvelope() const override;
+	SCENE_STEPPED_SCENE_OVERRIDES;
 	WreckingBallResult result() const;  // measured now
 	const btRigidBody& ball() const;
 	std::vector<const btRigidBody*> frameBodies() const;

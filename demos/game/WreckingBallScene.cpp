@@ -322,10 +322,7 @@ scene::SceneLedger WreckingBallScene::ledger() const
 }
 
 WreckingBallResult runWreckingBall(const WreckingBallParameters& p) { return scene::runToEnd<WreckingBallScene>(p); }
-}  // namespace game
 
-namespace game
-{
 scene::WorldBox WreckingBallScene::viewEnvelope() const
 {
 	// The frame (bays x span by storeys x height on the ground), the ball's swing from its release (left of the frame)

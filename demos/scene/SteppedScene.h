@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "RunStats.h"
 #include "btBulletDynamicsCommon.h"
 
 namespace scene
@@ -68,6 +69,17 @@ public:
 	// Static bodies that stand for whole structures (shown in the structure's colour, not the supports'): none here.
 	virtual std::vector<const btCollisionObject*> wholeStructures() const { return {}; }
 };
+
+// SteppedScene's interface as a scene's class declares it (each scene defines these in its .cpp), in one line of the
+// class: SCENE_STEPPED_SCENE_OVERRIDES;
+#define SCENE_STEPPED_SCENE_OVERRIDES                      \
+	void step() override;                                  \
+	bool done() const override;                            \
+	double time_s() const override;                        \
+	btDiscreteDynamicsWorld& world() override;             \
+	std::vector<scene::JointView> joints() const override; \
+	scene::SceneLedger ledger() const override;            \
+	scene::WorldBox viewEnvelope() const override
 
 // A scene of Parameters stepped until it is done, and its result() then (what the console runners print).
 template <class Scene, class Parameters>

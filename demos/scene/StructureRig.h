@@ -1,15 +1,17 @@
 // The world every structures scene runs in: the toolkit's plastic::StructureWorld (its solver settings: by default
-// btMLCPSolver + Dantzig, 10 iterations, 1/240 s; zero gravity, the textbook answers are for the applied loads
+// btDirectJointSolver, 10 iterations, 1/240 s; zero gravity, the textbook answers are for the applied loads
 // alone), a static ground that supports are fixed to (it collides with nothing), and the internal step loop. Loads
 // and joints that need something before or after each internal step register callbacks.
 #pragma once
 
+#include <chrono>
 #include <functional>
 #include <vector>
 
 #include "plastic/JointFactory.h"
 #include "plastic/SolverSettings.h"
 #include "Ranges.h"
+#include "RunStats.h"
 
 namespace scene
 {
@@ -59,9 +61,19 @@ public:
 	double step_s() const { return m_settings.world.internal_step_s; }
 	double time_s() const { return m_time_s; }
 	long steps() const { return m_steps; }
-	// internal steps in which btMLCPSolver's direct solve failed and it used sequential impulse instead (0 for SI)
+	// internal steps in which the direct or MLCP solver failed and sequential impulse solved the step instead (0 for SI)
 	int solverFallbacks() const { return m_world.solverFallbacks(); }
-	// internal steps in which the direct solve was tried again with a larger CFM (and then did not fall back unless counted above)
+	// the run so far: its internal steps, simulated time, wall time since start, fallbacks, and finite as the scene found it
+	RunStats runStats(std::chrono::steady_clock::time_point start, bool finite) const
+	{
+		RunStats stats;
+		stats.internal_steps = m_steps;
+		stats.simulated_s = m_time_s;
+		stats.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+		stats.solver_fallbacks = solverFallbacks();
+		stats.finite = finite;
+		return stats;
+	}
 
 	void beforeEachStep(std::function<void(double step_s)> callback) { m_before.push_back(std::move(callback)); }
 	void afterEachStep(std::function<void()> callback) { m_after.push_back(std::move(callback)); }

@@ -11,21 +11,18 @@
 #include <vector>
 
 #include "scene/SteppedScene.h"
+#include "scene/RectangularMember.h"
 #include "scene/StructureRig.h"
 #include "plastic/StressStrain.h"
 
 namespace structures
 {
-struct CantileverParameters
+// the member: its section (width along the bending axis z, depth along y) and material
+struct CantileverParameters : scene::RectangularMember
 {
 	scene::SolverSettings solver;
 	double length_m = 2.0;
 	int segments = 4;
-	double section_width_m = 0.05;  // along the bending axis z
-	double section_depth_m = 0.10;  // along y: Mp = fy b d^2 / 4
-	double yield_stress_pa = 400e6;
-	double youngs_modulus_pa = 200e9;
-	double density_kg_m3 = 7800;
 	bool follower_load = false;
 	// ramp_rate_per_s > 0: the load ratio P L / Mp rises at fast_ramp_rate_per_s up to slow_from_fraction of
 	// the plastic-analysis collapse ratio, then at ramp_rate_per_s, until a joint turns faster than
@@ -66,7 +63,7 @@ struct CantileverAnswer
 	double stop_rotation_rad = 0;  // constant dead load: where lambda sin(theta) = theta; 0 if it holds; NaN (follower, lambda > 1): never
 };
 
-struct CantileverResult
+struct CantileverResult : scene::RunStats
 {
 	CantileverAnswer answer;
 	double collapse_ratio = 0;     // ramp: the load ratio when the collapse was seen (NaN: never)
@@ -86,11 +83,6 @@ struct CantileverResult
 	double drift_load_ratio = 0;          // pushover: the actuator's force P L / Mp over the last 0.002 of drift
 	std::vector<double> cyclic_load_ratios;     // cyclic: the same before each of cyclic_drifts (P down positive)
 	std::vector<double> cyclic_measured_drifts; // and the tip's drift then
-	int solver_fallbacks = 0;             // internal steps in which btMLCPSolver fell back to sequential impulse
-	long steps = 0;
-	double simulated_s = 0;
-	double wall_s = 0;
-	bool finite = true;
 };
 
 std::vector<std::string> validateCantileverParameters(const CantileverParameters& p);
@@ -101,13 +93,7 @@ class CantileverScene : public scene::SteppedScene
 public:
 	explicit CantileverScene(const CantileverParameters& p);
 	~CantileverScene() override;
-	void step() override;
-	bool done() const override;
-	double time_s() const override;
-	btDiscreteDynamicsWorld& world() override;
-	std::vector<scene::JointView> joints() const override;
-	scene::SceneLedger ledger() const override;
-	scene::WorldBox viewEnvelope() const override;
+	SCENE_STEPPED_SCENE_OVERRIDES;
 	CantileverResult result() const;  // measured now
 
 private:

@@ -12,11 +12,7 @@ std::vector<std::string> validateCantileverParameters(const CantileverParameters
 	std::vector<std::string> e = scene::validateSolverSettings(p.solver);
 	scene::requireRange(e, "length", p.length_m, 0.01, 100, "m");
 	scene::requireWhole(e, "segments", p.segments, 1, 1000);
-	scene::requireRange(e, "section-width", p.section_width_m, 1e-4, 10, "m");
-	scene::requireRange(e, "section-depth", p.section_depth_m, 1e-4, 10, "m");
-	scene::requireRange(e, "fy", p.yield_stress_pa, 1e3, 1e11, "Pa");
-	scene::requireRange(e, "youngs-modulus", p.youngs_modulus_pa, 1e3, 1e13, "Pa");
-	scene::requireRange(e, "density", p.density_kg_m3, 1, 1e5, "kg/m3");
+	scene::validateMember(p, e);
 	scene::requireRange(e, "load-ratio", p.load_ratio, 0, 100, "(P L / Mp)");
 	scene::requireRange(e, "ramp-rate", p.ramp_rate_per_s, 0, 100, "1/s (0 = constant load)");
 	scene::requireRange(e, "fast-ramp-rate", p.fast_ramp_rate_per_s, 1e-6, 1000, "1/s");

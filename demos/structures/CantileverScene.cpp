@@ -35,17 +35,7 @@ struct CantileverScene::State
 	static plastic::BeamSpec beamSpec(const CantileverParameters& p)
 	{
 		// the support: the ground, the member along +x from the origin
-		plastic::BeamSpec spec;
-		spec.may_sleep = false;  // its loads change on resting bodies
-		spec.start_m = btVector3(0, 0, 0);
-		spec.end_m = btVector3(btScalar(p.length_m), 0, 0);
-		spec.segments = p.segments;
-		spec.joint.section = plastic::rectangle(p.section_width_m, p.section_depth_m);
-		spec.joint.material.yield_stress_pa = p.yield_stress_pa;
-		spec.joint.material.youngs_modulus_pa = p.youngs_modulus_pa;
-		spec.joint.material.density_kg_m3 = p.density_kg_m3;
-		spec.bending_axis = btVector3(0, 0, 1);
-		spec.joint.method = p.solver.method;
+		plastic::BeamSpec spec = scene::memberBeamSpec(p, btVector3(0, 0, 0), btVector3(btScalar(p.length_m), 0, 0), p.segments, p.solver.method);
 		spec.support_joint_half_length = p.support_joint_half_length;
 		if (p.stress_strain)
 		{
@@ -199,7 +189,6 @@ CantileverResult CantileverScene::result() const
 	r.stop_rotation_rad = s.stop_rotation_rad;
 	r.max_root_rotation_rad = s.max_root_rotation_rad;
 	r.max_inner_rotation_rad = s.max_inner_rotation_rad;
-	r.finite = s.finite;
 	r.collapse_ratio = s.test.collapseFactor();
 	r.holds = s.test.holds();
 	r.root_rotation_rad = -s.jointRotation(0);
@@ -219,10 +208,7 @@ CantileverResult CantileverScene::result() const
 	for (size_t j = 0; j < s.beam.joints().size(); j++) r.geometric_plastic_work_j += mp * std::fabs(s.jointRotation(j));
 	r.booked_plastic_work_j = s.beam.plasticWork_j();
 	r.energy_balance_error_pct = r.load_work_j > 0 ? 100.0 * (r.load_work_j - r.kinetic_j - r.geometric_plastic_work_j) / r.load_work_j : 0.0;
-	r.solver_fallbacks = s.rig.solverFallbacks();
-	r.steps = s.rig.steps();
-	r.simulated_s = s.rig.time_s();
-	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - s.start).count();
+	static_cast<scene::RunStats&>(r) = s.rig.runStats(s.start, s.finite);
 	return r;
 }
 
@@ -273,10 +259,7 @@ scene::SceneLedger CantileverScene::ledger() const
 }
 
 CantileverResult runCantilever(const CantileverParameters& p) { return scene::runToEnd<CantileverScene>(p); }
-}  // namespace structures
 
-namespace structures
-{
 scene::WorldBox CantileverScene::viewEnvelope() const
 {
 	// The member turns about its root (the origin), the tip down, through the arc its length sweeps: to the analytic

@@ -13,21 +13,18 @@
 #include <vector>
 
 #include "scene/SteppedScene.h"
+#include "scene/RectangularMember.h"
 #include "scene/StructureRig.h"
 
 namespace structures
 {
-struct DropWeightParameters
+// the member: its section and material
+struct DropWeightParameters : scene::RectangularMember
 {
 	scene::SolverSettings solver;
 	bool clamped = false;
 	double span_m = 2.0;
 	int segments = 2;  // even: a joint at mid-span
-	double section_width_m = 0.05;
-	double section_depth_m = 0.10;
-	double yield_stress_pa = 400e6;
-	double youngs_modulus_pa = 200e9;
-	double density_kg_m3 = 7800;
 	double weight_mass_kg = 1000;
 	double weight_radius_m = 0.05;
 	double impact_speed_m_s = 4.5;
@@ -46,7 +43,7 @@ struct DropWeightAnswer
 	double support_rotation_rad = 0;    // theta (plastic only when clamped)
 };
 
-struct DropWeightResult
+struct DropWeightResult : scene::RunStats
 {
 	DropWeightAnswer answer;
 	double kinetic_after_impact_j = 0;  // all bodies, when the ball and the mid-span first move together (NaN: never)
@@ -60,11 +57,6 @@ struct DropWeightResult
 	double midspan_error_pct = 0;       // against the estimate
 	double plastic_work_error_pct = 0;  // geometric plastic work against the estimate of the kinetic energy after impact
 	double balance_error_pct = 0;       // (kinetic after impact - kinetic at the end - geometric plastic work) / kinetic after impact
-	int solver_fallbacks = 0;           // internal steps in which btMLCPSolver fell back to sequential impulse
-	long steps = 0;
-	double simulated_s = 0;
-	double wall_s = 0;
-	bool finite = true;
 };
 
 std::vector<std::string> validateDropWeightParameters(const DropWeightParameters& p);
@@ -75,13 +67,7 @@ class DropWeightScene : public scene::SteppedScene
 public:
 	explicit DropWeightScene(const DropWeightParameters& p);
 	~DropWeightScene() override;
-	void step() override;
-	bool done() const override;
-	double time_s() const override;
-	btDiscreteDynamicsWorld& world() override;
-	std::vector<scene::JointView> joints() const override;
-	scene::SceneLedger ledger() const override;
-	scene::WorldBox viewEnvelope() const override;
+	SCENE_STEPPED_SCENE_OVERRIDES;
 	DropWeightResult result() const;  // measured now
 	const btRigidBody& ball() const;
 

@@ -9,11 +9,7 @@ std::vector<std::string> validateDropWeightParameters(const DropWeightParameters
 	scene::requireRange(e, "span", p.span_m, 0.1, 100, "m");
 	if (p.segments < 2 || p.segments > 1000 || p.segments % 2)
 		e.push_back("segments: " + std::to_string(p.segments) + " is not an even number in [2, 1000]");
-	scene::requireRange(e, "section-width", p.section_width_m, 1e-4, 10, "m");
-	scene::requireRange(e, "section-depth", p.section_depth_m, 1e-4, 10, "m");
-	scene::requireRange(e, "fy", p.yield_stress_pa, 1e3, 1e11, "Pa");
-	scene::requireRange(e, "youngs-modulus", p.youngs_modulus_pa, 1e3, 1e13, "Pa");
-	scene::requireRange(e, "density", p.density_kg_m3, 1, 1e5, "kg/m3");
+	scene::validateMember(p, e);
 	scene::requireRange(e, "weight-mass", p.weight_mass_kg, 1e-3, 1e7, "kg");
 	scene::requireRange(e, "weight-radius", p.weight_radius_m, 1e-3, 10, "m");
 	scene::requireRange(e, "impact-speed", p.impact_speed_m_s, 1e-3, 1000, "m/s");

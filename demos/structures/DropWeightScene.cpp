@@ -27,18 +27,7 @@ std::unique_ptr<btHingeConstraint> pin(btRigidBody& a, btRigidBody& b, const btV
 
 plastic::BeamSpec beamSpec(const DropWeightParameters& p)
 {
-	plastic::BeamSpec spec;
-	spec.may_sleep = false;  // as its figures were made
-	spec.start_m = btVector3(0, 0, 0);
-	spec.end_m = btVector3(btScalar(p.span_m), 0, 0);
-	spec.segments = p.segments;
-	spec.joint.section = plastic::rectangle(p.section_width_m, p.section_depth_m);
-	spec.joint.material.yield_stress_pa = p.yield_stress_pa;
-	spec.joint.material.youngs_modulus_pa = p.youngs_modulus_pa;
-	spec.joint.material.density_kg_m3 = p.density_kg_m3;
-	spec.bending_axis = btVector3(0, 0, 1);
-	spec.joint.method = p.solver.method;
-	return spec;
+	return scene::memberBeamSpec(p, btVector3(0, 0, 0), btVector3(btScalar(p.span_m), 0, 0), p.segments, p.solver.method);
 }
 
 std::unique_ptr<btRigidBody> makeBody(btScalar mass, btCollisionShape& shape, const btTransform& at)
@@ -224,7 +213,6 @@ DropWeightResult DropWeightScene::result() const
 	const State& s = *m;
 	DropWeightResult r;
 	r.answer = s.answer;
-	r.finite = s.finite;
 	r.kinetic_after_impact_j = s.kinetic_after_impact_j;
 	const size_t sites = s.angles.size() - 1;
 	r.midspan_rotation_rad = s.site(s.mid);
@@ -239,10 +227,7 @@ DropWeightResult DropWeightScene::result() const
 	r.midspan_error_pct = 100 * (r.midspan_rotation_rad - a.midspan_rotation_rad) / a.midspan_rotation_rad;
 	r.plastic_work_error_pct = 100 * (r.geometric_plastic_work_j - a.kinetic_after_impact_j) / a.kinetic_after_impact_j;
 	r.balance_error_pct = 100 * (r.kinetic_after_impact_j - r.kinetic_end_j - r.geometric_plastic_work_j) / r.kinetic_after_impact_j;
-	r.solver_fallbacks = s.rig.solverFallbacks();
-	r.steps = s.rig.steps();
-	r.simulated_s = s.rig.time_s();
-	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - s.start).count();
+	static_cast<scene::RunStats&>(r) = s.rig.runStats(s.start, s.finite);
 	return r;
 }
 
@@ -279,10 +264,7 @@ scene::SceneLedger DropWeightScene::ledger() const
 }
 
 DropWeightResult runDropWeight(const DropWeightParameters& p) { return scene::runToEnd<DropWeightScene>(p); }
-}  // namespace structures
 
-namespace structures
-{
 scene::WorldBox DropWeightScene::viewEnvelope() const
 {
 	// The beam (0..L along x), the weight on its top face at mid-span, and the mechanism: the halves turn by the

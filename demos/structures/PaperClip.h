@@ -51,7 +51,7 @@ struct HysteresisSample
 	double moment_nm = 0;
 };
 
-struct PaperClipResult
+struct PaperClipResult : scene::RunStats
 {
 	PaperClipAnswer answer;
 	bool broken = false;
@@ -67,9 +67,6 @@ struct PaperClipResult
 	double energy_balance_error_pct = 0;  // (hand's work - plastic - elastic - kinetic change) / hand's work
 	double peak_moment_nm = 0;     // largest |moment| the hand applied
 	std::vector<HysteresisSample> hysteresis;  // every step until it broke
-	long steps = 0;
-	double simulated_s = 0;
-	bool finite = true;
 };
 
 std::vector<std::string> validatePaperClipParameters(const PaperClipParameters& p);
@@ -82,13 +79,7 @@ class PaperClipScene : public scene::SteppedScene
 public:
 	explicit PaperClipScene(const PaperClipParameters& p);
 	~PaperClipScene() override;
-	void step() override;
-	bool done() const override;
-	double time_s() const override;
-	btDiscreteDynamicsWorld& world() override;
-	std::vector<scene::JointView> joints() const override;
-	scene::SceneLedger ledger() const override;
-	scene::WorldBox viewEnvelope() const override;
+	SCENE_STEPPED_SCENE_OVERRIDES;
 	PaperClipResult result() const;
 
 private:

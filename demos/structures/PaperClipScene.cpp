@@ -1,6 +1,7 @@
 // The paper clip scene: the wire's leg on a plastic joint at the vise, turned by a kinematic hand, measured from the
 // hand's lock (its moment on the leg) and the leg's motion.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -28,6 +29,7 @@ struct PaperClipScene::State
 		  handShape(btVector3(btScalar(p.wire_diameter_m), btScalar(p.wire_diameter_m), btScalar(p.wire_diameter_m)))
 	{
 	}
+	const std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
 	double drivenAngle(double t) const { return p.bend_amplitude_rad * std::sin(2 * kPi * t / p.cycle_period_s); }
 	double legAngle() const
 	{
@@ -151,8 +153,7 @@ PaperClipResult PaperClipScene::result() const
 	r.kinetic_j = s.ledger.measure().kinetic_j;
 	r.energy_balance_error_pct =
 		r.hand_work_j > 0 ? 100 * (r.hand_work_j - r.plastic_work_j - r.elastic_j - (r.kinetic_j - r.start_kinetic_j)) / r.hand_work_j : 0.0;
-	r.steps = s.rig.steps();
-	r.simulated_s = s.rig.time_s();
+	static_cast<scene::RunStats&>(r) = s.rig.runStats(s.start, s.r.finite);
 	return r;
 }
 

@@ -11,22 +11,19 @@
 #include <vector>
 
 #include "scene/SteppedScene.h"
+#include "scene/RectangularMember.h"
 #include "scene/StructureRig.h"
 
 namespace structures
 {
-struct PortalParameters
+// the member: its section and material
+struct PortalParameters : scene::RectangularMember
 {
 	scene::SolverSettings solver;
 	double span_m = 4.0;
 	double height_m = 3.0;
 	int column_segments = 2;  // the joints between them are the mid-column hinge sites
 	int beam_segments = 2;    // even: a joint at mid-span
-	double section_width_m = 0.05;
-	double section_depth_m = 0.10;
-	double yield_stress_pa = 400e6;
-	double youngs_modulus_pa = 200e9;
-	double density_kg_m3 = 7800;
 	double horizontal_load_n = 50e3;  // H at lambda = 1: H h = 3 Mp with the defaults
 	double vertical_load_n = 75e3;    // V at lambda = 1: V L / 2 = 3 Mp: the combined mechanism at lambda = 1
 	// the load factor rises at fast_ramp_rate_per_s up to slow_from_fraction of the plastic-analysis collapse
@@ -83,7 +80,7 @@ struct PortalAnswer
 // lever's 1 / cos(theta), and a first-order analysis says 1 at every drift.
 double swaySecondOrderRatio(const PortalParameters& p, double drift);
 
-struct PortalResult
+struct PortalResult : scene::RunStats
 {
 	PortalAnswer answer;
 	double collapse_factor = 0;  // the load factor when the collapse was seen (NaN: never)
@@ -102,11 +99,6 @@ struct PortalResult
 	std::vector<double> sway_measured_drifts;    // and the left knee's drift then
 	std::vector<double> second_order_load_ratios;  // swaySecondOrderRatio at each measured drift
 	int holds = 0;                        // ramp: how many times the load was held (more than one: softening or vibration was not a collapse)
-	int solver_fallbacks = 0;             // internal steps in which btMLCPSolver fell back to sequential impulse
-	long steps = 0;
-	double simulated_s = 0;
-	double wall_s = 0;
-	bool finite = true;
 };
 
 std::vector<std::string> validatePortalParameters(const PortalParameters& p);
@@ -117,13 +109,7 @@ class PortalScene : public scene::SteppedScene
 public:
 	explicit PortalScene(const PortalParameters& p);
 	~PortalScene() override;
-	void step() override;
-	bool done() const override;
-	double time_s() const override;
-	btDiscreteDynamicsWorld& world() override;
-	std::vector<scene::JointView> joints() const override;
-	scene::SceneLedger ledger() const override;
-	scene::WorldBox viewEnvelope() const override;
+	SCENE_STEPPED_SCENE_OVERRIDES;
 	PortalResult result() const;  // measured now
 
 private:

@@ -18,11 +18,7 @@ std::vector<std::string> validatePortalParameters(const PortalParameters& p)
 	scene::requireWhole(e, "column-segments", p.column_segments, 1, 100);
 	if (p.beam_segments < 2 || p.beam_segments > 100 || p.beam_segments % 2)
 		e.push_back("beam-segments: " + std::to_string(p.beam_segments) + " is not an even number in [2, 100]");
-	scene::requireRange(e, "section-width", p.section_width_m, 1e-4, 10, "m");
-	scene::requireRange(e, "section-depth", p.section_depth_m, 1e-4, 10, "m");
-	scene::requireRange(e, "fy", p.yield_stress_pa, 1e3, 1e11, "Pa");
-	scene::requireRange(e, "youngs-modulus", p.youngs_modulus_pa, 1e3, 1e13, "Pa");
-	scene::requireRange(e, "density", p.density_kg_m3, 1, 1e5, "kg/m3");
+	scene::validateMember(p, e);
 	scene::requireRange(e, "horizontal-load", p.horizontal_load_n, 0, 1e12, "N");
 	scene::requireRange(e, "vertical-load", p.vertical_load_n, 0, 1e12, "N");
 	if (e.empty() && p.sway_drifts.empty() && p.horizontal_load_n + p.vertical_load_n <= 0) e.push_back("horizontal-load, vertical-load: one of them must be > 0 N");

@@ -23,18 +23,7 @@ namespace
 {
 plastic::BeamSpec memberSpec(const PortalParameters& p, const btVector3& start, const btVector3& end, int segments)
 {
-	plastic::BeamSpec spec;
-	spec.may_sleep = false;  // its loads change on resting bodies
-	spec.joint.section = plastic::rectangle(p.section_width_m, p.section_depth_m);
-	spec.joint.material.yield_stress_pa = p.yield_stress_pa;
-	spec.joint.material.youngs_modulus_pa = p.youngs_modulus_pa;
-	spec.joint.material.density_kg_m3 = p.density_kg_m3;
-	spec.bending_axis = btVector3(0, 0, 1);
-	spec.joint.method = p.solver.method;
-	spec.start_m = start;
-	spec.end_m = end;
-	spec.segments = segments;
-	return spec;
+	return scene::memberBeamSpec(p, start, end, segments, p.solver.method);
 }
 }  // namespace
 
@@ -229,7 +218,6 @@ PortalResult PortalScene::result() const
 	PortalResult r;
 	r.answer = s.answer;
 	const double mp = s.answer.plastic_moment_nm;
-	r.finite = s.finite;
 	r.rotations_rad = s.rotations();
 	r.max_rotation_rad = s.max_rotation_rad;
 	for (size_t i = 0; i < s.atThird.size(); i++) r.creep_rad = std::max(r.creep_rad, std::fabs(r.rotations_rad[i] - s.atThird[i]));
@@ -249,10 +237,7 @@ PortalResult PortalScene::result() const
 	r.kinetic_j = s.ledger.measure().kinetic_j;
 	for (const plastic::Joint* j : s.joints) r.booked_plastic_work_j += j->plasticWork_j();
 	for (double x : r.rotations_rad) r.geometric_plastic_work_j += mp * std::fabs(x);
-	r.solver_fallbacks = s.rig.solverFallbacks();
-	r.steps = s.rig.steps();
-	r.simulated_s = s.rig.time_s();
-	r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - s.start).count();
+	static_cast<scene::RunStats&>(r) = s.rig.runStats(s.start, s.finite);
 	return r;
 }
 
@@ -300,10 +285,7 @@ scene::SceneLedger PortalScene::ledger() const
 }
 
 PortalResult runPortal(const PortalParameters& p) { return scene::runToEnd<PortalScene>(p); }
-}  // namespace structures
 
-namespace structures
-{
 scene::WorldBox PortalScene::viewEnvelope() const
 {
 	// The frame (columns 0..h at x = 0 and L, the beam at h) and its mechanism: the columns sway and the beam sags by

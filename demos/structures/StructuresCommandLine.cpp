@@ -58,11 +58,11 @@ template <class P>
 Flags<P> commonFlags()
 {
 	Flags<P> f = solverFlags<P>();
-	f["section-width"] = numberFlag(&P::section_width_m, "M  rectangle along the bending axis, default 0.05");
-	f["section-depth"] = numberFlag(&P::section_depth_m, "M  rectangle in the bending plane, default 0.1");
-	f["fy"] = numberFlag(&P::yield_stress_pa, "PA  yield stress, default 400e6 (Mp = fy b d^2 / 4 = 50 kN m)");
-	f["youngs-modulus"] = numberFlag(&P::youngs_modulus_pa, "PA  default 200e9");
-	f["density"] = numberFlag(&P::density_kg_m3, "KG_M3  default 7800");
+	f["section-width"] = numberFlag<P>(&P::section_width_m, "M  rectangle along the bending axis, default 0.05");
+	f["section-depth"] = numberFlag<P>(&P::section_depth_m, "M  rectangle in the bending plane, default 0.1");
+	f["fy"] = numberFlag<P>(&P::yield_stress_pa, "PA  yield stress, default 400e6 (Mp = fy b d^2 / 4 = 50 kN m)");
+	f["youngs-modulus"] = numberFlag<P>(&P::youngs_modulus_pa, "PA  default 200e9");
+	f["density"] = numberFlag<P>(&P::density_kg_m3, "KG_M3  default 7800");
 	f["duration"] = numberFlag(&P::duration_s, "SECONDS  simulated time at most");
 	return f;
 }
