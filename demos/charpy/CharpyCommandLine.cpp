@@ -75,48 +75,24 @@ CharpyCommandLine parseCharpyCommandLine(const std::vector<std::string>& argumen
 		else
 			cl.errors.push_back("--geometry: '" + value + "' is not valid; expected standard or thesis");
 	}
-	for (const std::string& argument : arguments)
+	bool fullDuration = false;
+	for (const scene::FlagArgument& flag : scene::splitFlagArguments(arguments, cl.errors))
 	{
-		const std::optional<scene::FlagArgument> flag = scene::splitFlagArgument(argument, cl.errors);
-		if (!flag)
-		{
+		if (scene::takeSwitch(flag,
+							  {{"help", &cl.help}, {"list-methods", &cl.listMethods}, {"json", &cl.json}, {"auto-dt", &cl.parameters.auto_dt},
+							   {"full-duration", &fullDuration}},
+							  cl.errors) ||
+			scene::takePath(flag, "history", cl.historyPath, cl.errors))
 			continue;
-		}
-		const std::string& name = flag->name;
-		const std::string& value = flag->value;
-		const bool hasValue = flag->hasValue;
-		auto flagWithoutValue = [&](bool& target) { scene::setSwitch(*flag, target, cl.errors); };
-		if (name == "help")
-			flagWithoutValue(cl.help);
-		else if (name == "list-methods")
-			flagWithoutValue(cl.listMethods);
-		else if (name == "json")
-			flagWithoutValue(cl.json);
-		else if (name == "auto-dt")
-			flagWithoutValue(cl.parameters.auto_dt);
-		else if (name == "full-duration")
+		if (flag.name == "geometry")
 		{
-			bool full = false;
-			flagWithoutValue(full);
-			cl.parameters.end_when_clear = cl.parameters.end_when_clear && !full;
-		}
-		else if (name == "geometry")
-		{
-			if (!hasValue)
+			if (!flag.hasValue)
 				cl.errors.push_back("--geometry needs a value: --geometry=standard|thesis");
 		}
-		else if (name == "history")
-		{
-			if (!hasValue || value.empty())
-				cl.errors.push_back("--history needs a file name: --history=FILE.csv");
-			else
-				cl.historyPath = value;
-		}
 		else
-		{
-			scene::applyFlag(valueFlags(), cl.parameters, *flag, cl.errors);
-		}
+			scene::applyFlag(valueFlags(), cl.parameters, flag, cl.errors);
 	}
+	cl.parameters.end_when_clear = cl.parameters.end_when_clear && !fullDuration;
 	if (cl.errors.empty() && !cl.help && !cl.listMethods)
 	{
 		for (const std::string& e : validateCharpyParameters(cl.parameters))

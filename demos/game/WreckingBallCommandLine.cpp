@@ -70,26 +70,11 @@ const scene::Flags<WreckingBallParameters>& flags()
 WreckingBallCommandLine parseWreckingBallCommandLine(const std::vector<std::string>& arguments)
 {
 	WreckingBallCommandLine cl;
-	for (const std::string& argument : arguments)
+	for (const scene::FlagArgument& flag : scene::splitFlagArguments(arguments, cl.errors))
 	{
-		const std::optional<scene::FlagArgument> flag = scene::splitFlagArgument(argument, cl.errors);
-		if (!flag)
-		{
-			continue;
-		}
-		const std::string& name = flag->name;
-		const std::string& value = flag->value;
-		if (name == "help" || name == "json")
-			scene::setSwitch(*flag, name == "help" ? cl.help : cl.json, cl.errors);
-		else if (name == "joints-csv" || name == "history")
-		{
-			if (value.empty())
-				cl.errors.push_back("--" + name + " needs a value: --" + name + "=PATH");
-			else
-				(name == "history" ? cl.history_csv : cl.joints_csv) = value;
-		}
-		else
-			scene::applyFlag(flags(), cl.parameters, *flag, cl.errors);
+		if (!scene::takeSwitch(flag, {{"help", &cl.help}, {"json", &cl.json}}, cl.errors) && !scene::takePath(flag, "joints-csv", cl.joints_csv, cl.errors) &&
+			!scene::takePath(flag, "history", cl.history_csv, cl.errors))
+			scene::applyFlag(flags(), cl.parameters, flag, cl.errors);
 	}
 	if (cl.help || !cl.errors.empty()) return cl;
 	const std::vector<std::string> invalid = validateWreckingBallParameters(cl.parameters);

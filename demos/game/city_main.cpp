@@ -47,13 +47,11 @@ int main(int argc, char** argv)
 	std::vector<std::string> errors;
 	bool json = false, help = false;
 	const scene::Flags<CityParameters> flags = cityFlags();
-	for (int i = 1; i < argc; i++)
+	for (const scene::FlagArgument& flag : scene::splitFlagArguments(std::vector<std::string>(argv + 1, argv + argc), errors))
 	{
-		const std::optional<scene::FlagArgument> flag = scene::splitFlagArgument(argv[i], errors);
-		if (!flag) continue;
-		if (flag->name == "json") json = true;
-		if (flag->name == "help") help = true;
-		scene::applyFlag(flags, p, *flag, errors);
+		if (flag.name == "json") json = true;
+		if (flag.name == "help") help = true;
+		scene::applyFlag(flags, p, flag, errors);
 	}
 	if (help)
 	{

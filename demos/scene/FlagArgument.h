@@ -35,6 +35,20 @@ inline std::optional<FlagArgument> splitFlagArgument(const std::string& argument
 	}
 	return flag;
 }
+// Every argument's flag, in order; an argument that is no flag is left out, with the runners' error text in errors.
+inline std::vector<FlagArgument> splitFlagArguments(const std::vector<std::string>& arguments, std::vector<std::string>& errors)
+{
+	std::vector<FlagArgument> flags;
+	for (const std::string& argument : arguments)
+	{
+		if (std::optional<FlagArgument> flag = splitFlagArgument(argument, errors))
+		{
+			flags.push_back(*flag);
+		}
+	}
+	return flags;
+}
+
 // A flag's value as a number: the whole text must be a number strtod reads (the parameters' validation checks its range).
 inline bool parseNumber(const std::string& text, double& value)
 {

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <functional>
+#include <initializer_list>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "FlagArgument.h"
@@ -67,6 +69,33 @@ inline void setSwitch(const FlagArgument& flag, bool& target, std::vector<std::s
 		errors.push_back("--" + flag.name + " takes no value");
 	else
 		target = true;
+}
+
+// If flag is one of switches (flags without a value outside the table: --help, --json, ...), sets its target (or says
+// it takes no value) and returns true; false for any other flag.
+inline bool takeSwitch(const FlagArgument& flag, std::initializer_list<std::pair<const char*, bool*>> switches, std::vector<std::string>& errors)
+{
+	for (const auto& [name, target] : switches)
+	{
+		if (flag.name == name)
+		{
+			setSwitch(flag, *target, errors);
+			return true;
+		}
+	}
+	return false;
+}
+
+// If flag is --name, a file the runner writes, stores its value in target (or says it needs one) and returns true.
+inline bool takePath(const FlagArgument& flag, const char* name, std::string& target, std::vector<std::string>& errors)
+{
+	if (flag.name != name)
+		return false;
+	if (flag.value.empty())
+		errors.push_back("--" + flag.name + " needs a file name: --" + flag.name + "=FILE");
+	else
+		target = flag.value;
+	return true;
 }
 
 // one line per flag: "  --name=HELP" ("  --name  HELP" for a flag without a value)

@@ -194,26 +194,16 @@ StructuresCommandLine parseStructuresCommandLine(const std::vector<std::string>&
 {
 	StructuresCommandLine cl;
 	std::vector<scene::FlagArgument> flags;
-	for (const std::string& argument : arguments)
+	for (const scene::FlagArgument& flag : scene::splitFlagArguments(arguments, cl.errors))
 	{
-		const std::optional<scene::FlagArgument> flag = scene::splitFlagArgument(argument, cl.errors);
-		if (!flag)
-		{
+		if (scene::takeSwitch(flag, {{"help", &cl.help}, {"json", &cl.json}}, cl.errors))
 			continue;
-		}
-		const std::string& name = flag->name;
-		const std::string& value = flag->value;
-		if (name == "help" || name == "json")
-			scene::setSwitch(*flag, name == "help" ? cl.help : cl.json, cl.errors);
-		else if (name == "scene")
-		{
-			if (value == "cantilever" || value == "portal" || value == "drop-weight" || value == "paper-clip")
-				cl.scene = value;
-			else
-				cl.errors.push_back("--scene: '" + value + "' is not valid; expected one of cantilever, portal, drop-weight, paper-clip");
-		}
+		if (flag.name != "scene")
+			flags.push_back(flag);
+		else if (flag.value == "cantilever" || flag.value == "portal" || flag.value == "drop-weight" || flag.value == "paper-clip")
+			cl.scene = flag.value;
 		else
-			flags.push_back(*flag);
+			cl.errors.push_back("--scene: '" + flag.value + "' is not valid; expected one of cantilever, portal, drop-weight, paper-clip");
 	}
 	if (cl.help) return cl;
 	if (cl.scene.empty() && cl.errors.empty())
