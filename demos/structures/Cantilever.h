@@ -13,29 +13,22 @@
 #include "scene/SteppedScene.h"
 #include "scene/RectangularMember.h"
 #include "scene/StructureRig.h"
+#include "CollapseTest.h"
 #include "plastic/StressStrain.h"
 
 namespace structures
 {
-// the member: its section (width along the bending axis z, depth along y) and material
-struct CantileverParameters : scene::RectangularMember
+// the member: its section (width along the bending axis z, depth along y) and material; the collapse test's ramp
+struct CantileverParameters : scene::RectangularMember, CollapseRamp
 {
 	scene::SolverSettings solver;
 	double length_m = 2.0;
 	int segments = 4;
 	bool follower_load = false;
-	// ramp_rate_per_s > 0: the load ratio P L / Mp rises at fast_ramp_rate_per_s up to slow_from_fraction of
-	// the plastic-analysis collapse ratio, then at ramp_rate_per_s, until a joint turns faster than
-	// collapse_rate_rad_s (over rate_window_s); then it is held until the mechanism has turned
-	// mechanism_rotation_rad (else, after hold_s, the ramp resumes). 0: the load ratio is load_ratio from the start.
+	// ramp_rate_per_s > 0: the load ratio P L / Mp rises by the ramp (CollapseRamp, the load factor being P L / Mp);
+	// 0: the load ratio is load_ratio from the start.
 	double load_ratio = 1.5;
 	double ramp_rate_per_s = 0;
-	double fast_ramp_rate_per_s = 0.2;
-	double slow_from_fraction = 0.9;
-	double collapse_rate_rad_s = 0.05;
-	double rate_window_s = 0.1;
-	double mechanism_rotation_rad = 0.05;
-	double hold_s = 2.0;       // a held load that has not turned the mechanism that far by then is raised again
 	double duration_s = 30.0;  // at most; a constant dead load stops when the beam has stopped
 	// elastic-plastic2 only: the joints harden as the section does under this curve (JointSpec::stress_strain; its
 	// first pair sets E and fy, and Mp = fy W_pl); none: elastic-perfectly plastic at --fy

@@ -15,12 +15,7 @@ std::vector<std::string> validateCantileverParameters(const CantileverParameters
 	scene::validateMember(p, e);
 	scene::requireRange(e, "load-ratio", p.load_ratio, 0, 100, "(P L / Mp)");
 	scene::requireRange(e, "ramp-rate", p.ramp_rate_per_s, 0, 100, "1/s (0 = constant load)");
-	scene::requireRange(e, "fast-ramp-rate", p.fast_ramp_rate_per_s, 1e-6, 1000, "1/s");
-	scene::requireRange(e, "slow-from", p.slow_from_fraction, 0, 1, "(of the plastic-analysis collapse load)");
-	scene::requireRange(e, "collapse-rate", p.collapse_rate_rad_s, 1e-6, 100, "rad/s");
-	scene::requireRange(e, "rate-window", p.rate_window_s, 1e-3, 10, "s");
-	scene::requireRange(e, "mechanism-rotation", p.mechanism_rotation_rad, 1e-4, 3, "rad");
-	scene::requireRange(e, "hold", p.hold_s, 1e-3, 100, "s");
+	validateCollapseRamp(p, e);
 	scene::requireRange(e, "duration", p.duration_s, 1e-3, 1000, "s");
 	scene::requireRange(e, "tip-drift", p.tip_drift, 0, 1, "(of the length; 0 = a load, not a pushover)");
 	scene::requireRange(e, "drift-rate", p.drift_rate_per_s, 1e-4, 10, "1/s (of the length)");

@@ -3,8 +3,26 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/Ranges.h"
+
 namespace structures
 {
+void validateCollapseRamp(const CollapseRamp& ramp, std::vector<std::string>& e)
+{
+	scene::requireRange(e, "fast-ramp-rate", ramp.fast_ramp_rate_per_s, 1e-6, 1000, "1/s");
+	scene::requireRange(e, "slow-from", ramp.slow_from_fraction, 0, 1, "(of the plastic-analysis collapse factor)");
+	scene::requireRange(e, "collapse-rate", ramp.collapse_rate_rad_s, 1e-6, 100, "rad/s");
+	scene::requireRange(e, "rate-window", ramp.rate_window_s, 1e-3, 10, "s");
+	scene::requireRange(e, "mechanism-rotation", ramp.mechanism_rotation_rad, 1e-4, 3, "rad");
+	scene::requireRange(e, "hold", ramp.hold_s, 1e-3, 100, "s");
+}
+
+CollapseTestSettings collapseTestSettings(const CollapseRamp& ramp, double slowRate_per_s, double collapseFactor)
+{
+	return {slowRate_per_s, ramp.fast_ramp_rate_per_s, ramp.slow_from_fraction * collapseFactor, ramp.collapse_rate_rad_s, ramp.rate_window_s,
+			ramp.mechanism_rotation_rad, ramp.hold_s};
+}
+
 CollapseTest::CollapseTest(const CollapseTestSettings& s)
 	: m_s(s), m_ramp(s.slow_rate_per_s, s.fast_rate_per_s, s.slow_from_factor), m_detector(s.collapse_rate_rad_s, s.rate_window_s)
 {

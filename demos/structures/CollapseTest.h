@@ -5,6 +5,7 @@
 #pragma once
 
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "CollapseDetector.h"
@@ -22,6 +23,25 @@ struct CollapseTestSettings
 	double mechanism_rotation_rad = 0.05;
 	double hold_s = 2.0;
 };
+
+// The ramp as a scene's parameters give it (the cantilever's and the portal's derive from it): the load factor rises
+// at fast_ramp_rate_per_s up to slow_from_fraction of the plastic-analysis collapse factor, then at the scene's
+// ramp_rate_per_s, until a joint turns faster than collapse_rate_rad_s (over rate_window_s); then it is held: a
+// collapse if the mechanism turns mechanism_rotation_rad within hold_s, else the ramp resumes.
+struct CollapseRamp
+{
+	double fast_ramp_rate_per_s = 0.2;
+	double slow_from_fraction = 0.9;
+	double collapse_rate_rad_s = 0.05;
+	double rate_window_s = 0.1;
+	double mechanism_rotation_rad = 0.05;
+	double hold_s = 2.0;  // a held load that has not turned the mechanism that far by then is raised again
+};
+
+// Appends "name: value is not in range" for every field out of its range (named as the runners' flags).
+void validateCollapseRamp(const CollapseRamp& ramp, std::vector<std::string>& errors);
+// The test's settings for a scene's ramp, its slow rate and the plastic-analysis collapse factor.
+CollapseTestSettings collapseTestSettings(const CollapseRamp& ramp, double slowRate_per_s, double collapseFactor);
 
 class CollapseTest
 {

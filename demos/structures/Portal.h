@@ -13,11 +13,12 @@
 #include "scene/SteppedScene.h"
 #include "scene/RectangularMember.h"
 #include "scene/StructureRig.h"
+#include "CollapseTest.h"
 
 namespace structures
 {
-// the member: its section and material
-struct PortalParameters : scene::RectangularMember
+// the member: its section and material; the collapse test's ramp
+struct PortalParameters : scene::RectangularMember, CollapseRamp
 {
 	scene::SolverSettings solver;
 	double span_m = 4.0;
@@ -26,18 +27,10 @@ struct PortalParameters : scene::RectangularMember
 	int beam_segments = 2;    // even: a joint at mid-span
 	double horizontal_load_n = 50e3;  // H at lambda = 1: H h = 3 Mp with the defaults
 	double vertical_load_n = 75e3;    // V at lambda = 1: V L / 2 = 3 Mp: the combined mechanism at lambda = 1
-	// the load factor rises at fast_ramp_rate_per_s up to slow_from_fraction of the plastic-analysis collapse
-	// factor, then at ramp_rate_per_s, until a joint turns faster than collapse_rate_rad_s (over rate_window_s);
-	// then it is held: a collapse if the mechanism turns mechanism_rotation_rad within hold_s, else the ramp resumes.
-	// 0: no ramp, the load factor is load_factor from the start (a hold below collapse: does the frame creep?)
+	// the load factor rises by the ramp (CollapseRamp) at ramp_rate_per_s from slow_from_fraction of the collapse
+	// factor on; 0: no ramp, the load factor is load_factor from the start (a hold below collapse: does the frame creep?)
 	double ramp_rate_per_s = 0.02;
 	double load_factor = 0.9;
-	double fast_ramp_rate_per_s = 0.2;
-	double slow_from_fraction = 0.9;
-	double collapse_rate_rad_s = 0.05;
-	double rate_window_s = 0.1;
-	double mechanism_rotation_rad = 0.05;
-	double hold_s = 2.0;       // a held load that has not turned the mechanism that far by then is raised again
 	double duration_s = 60.0;  // at most
 	// gravity: a dead load down at each knee (N), raised from 0 over knee_load_ramp_s and then held (with the ramp,
 	// the load factor starts rising then); its work P times the knees' descent is the P-delta effect of a sway

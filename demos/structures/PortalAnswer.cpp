@@ -24,12 +24,7 @@ std::vector<std::string> validatePortalParameters(const PortalParameters& p)
 	if (e.empty() && p.sway_drifts.empty() && p.horizontal_load_n + p.vertical_load_n <= 0) e.push_back("horizontal-load, vertical-load: one of them must be > 0 N");
 	scene::requireRange(e, "ramp-rate", p.ramp_rate_per_s, 0, 100, "1/s (0 = constant --load-factor)");
 	scene::requireRange(e, "load-factor", p.load_factor, 0, 1000, "");
-	scene::requireRange(e, "fast-ramp-rate", p.fast_ramp_rate_per_s, 1e-6, 1000, "1/s");
-	scene::requireRange(e, "slow-from", p.slow_from_fraction, 0, 1, "(of the plastic-analysis collapse factor)");
-	scene::requireRange(e, "collapse-rate", p.collapse_rate_rad_s, 1e-6, 100, "rad/s");
-	scene::requireRange(e, "rate-window", p.rate_window_s, 1e-3, 10, "s");
-	scene::requireRange(e, "mechanism-rotation", p.mechanism_rotation_rad, 1e-4, 3, "rad");
-	scene::requireRange(e, "hold", p.hold_s, 1e-3, 100, "s");
+	validateCollapseRamp(p, e);
 	scene::requireRange(e, "duration", p.duration_s, 1e-3, 10000, "s");
 	scene::requireRange(e, "knee-load", p.knee_load_n, 0, 1e12, "N");
 	scene::requireRange(e, "knee-load-ramp", p.knee_load_ramp_s, 1e-3, 100, "s");

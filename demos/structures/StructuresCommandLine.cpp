@@ -92,12 +92,12 @@ template <class P>
 void addRampFlags(Flags<P>& f, const char* rateHelp)
 {
 	f["ramp-rate"] = numberFlag(&P::ramp_rate_per_s, rateHelp);
-	f["fast-ramp-rate"] = numberFlag(&P::fast_ramp_rate_per_s, "1/S  load factor rate up to --slow-from, default 0.2");
-	f["slow-from"] = numberFlag(&P::slow_from_fraction, "FRACTION  of the plastic-analysis collapse factor where the slow ramp starts, default 0.9");
-	f["collapse-rate"] = numberFlag(&P::collapse_rate_rad_s, "RAD_S  a joint turning faster (over --rate-window) is the collapse, default 0.05");
-	f["rate-window"] = numberFlag(&P::rate_window_s, "SECONDS  default 0.1");
-	f["mechanism-rotation"] = numberFlag(&P::mechanism_rotation_rad, "RAD  a held load that turns the mechanism this far is the collapse, default 0.05");
-	f["hold"] = numberFlag(&P::hold_s, "SECONDS  how long the load is held before it rises again, default 2");
+	f["fast-ramp-rate"] = numberFlag<P>(&P::fast_ramp_rate_per_s, "1/S  load factor rate up to --slow-from, default 0.2");
+	f["slow-from"] = numberFlag<P>(&P::slow_from_fraction, "FRACTION  of the plastic-analysis collapse factor where the slow ramp starts, default 0.9");
+	f["collapse-rate"] = numberFlag<P>(&P::collapse_rate_rad_s, "RAD_S  a joint turning faster (over --rate-window) is the collapse, default 0.05");
+	f["rate-window"] = numberFlag<P>(&P::rate_window_s, "SECONDS  default 0.1");
+	f["mechanism-rotation"] = numberFlag<P>(&P::mechanism_rotation_rad, "RAD  a held load that turns the mechanism this far is the collapse, default 0.05");
+	f["hold"] = numberFlag<P>(&P::hold_s, "SECONDS  how long the load is held before it rises again, default 2");
 }
 
 const Flags<CantileverParameters>& cantileverFlags()
