@@ -8,6 +8,7 @@
 
 #include "CharpyScene.h"
 #include "CharpyVerdict.h"
+#include "scene/JsonNumber.h"
 
 CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history)
 {
@@ -79,40 +80,26 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	return r;
 }
 
-namespace
-{
-std::string number(double value)
-{
-	if (!std::isfinite(value))
-	{
-		return "null";
-	}
-	char text[64];
-	std::snprintf(text, sizeof text, "%.9g", value);
-	return text;
-}
-}  // namespace
-
 std::string toJson(const CharpyResult& r)
 {
 	std::ostringstream out;
 	auto flag = [](bool b) { return b ? "true" : "false"; };
-	out << "{\"method\":\"" << r.method << "\",\"dt\":" << number(r.dt_s) << ",\"auto_dt\":" << flag(r.auto_dt)
-		<< ",\"iterations\":" << r.iterations << ",\"solver\":\"" << r.solver << "\",\"solver_fallbacks\":" << r.solver_fallbacks << ",\"steps\":" << r.internal_steps << ",\"frames\":" << r.frames << ",\"end_time_s\":" << number(r.end_time_s)
-		<< ",\"wall_s\":" << number(r.wall_s) << ",\"E0_J\":" << number(r.E0_J) << ",\"E_end_J\":" << number(r.E_end_J)
-		<< ",\"energy_loss_J\":" << number(r.energy_loss_J) << ",\"plastic_work_J\":" << number(r.plastic_work_J)
-		<< ",\"other_loss_J\":" << number(r.other_loss_J) << ",\"analytic_J\":" << number(r.analytic_J)
-		<< ",\"theta_pass_rad\":" << number(r.theta_pass_rad) << ",\"plastic_moment_Nm\":" << number(r.plastic_moment_Nm)
-		<< ",\"error_pct\":" << number(r.error_pct) << ",\"plastic_rotation_rad\":" << number(r.plastic_rotation_rad)
-		<< ",\"bend_angle_rad\":" << number(r.bend_angle_rad)
-		<< ",\"end_bend_angle_rad\":" << number(r.end_bend_angle_rad) << ",\"impact_speed_m_s\":" << number(r.impact_speed_m_s)
-		<< ",\"friction\":" << number(r.friction) << ",\"striker_radius_m\":" << number(r.striker_radius_m)
-		<< ",\"anvil_edge_radius_m\":" << number(r.anvil_radius_m) << ",\"anvil_taper_rad\":" << number(r.anvil_taper_rad)
+	out << "{\"method\":\"" << r.method << "\",\"dt\":" << scene::jsonNumber(r.dt_s) << ",\"auto_dt\":" << flag(r.auto_dt)
+		<< ",\"iterations\":" << r.iterations << ",\"solver\":\"" << r.solver << "\",\"solver_fallbacks\":" << r.solver_fallbacks << ",\"steps\":" << r.internal_steps << ",\"frames\":" << r.frames << ",\"end_time_s\":" << scene::jsonNumber(r.end_time_s)
+		<< ",\"wall_s\":" << scene::jsonNumber(r.wall_s) << ",\"E0_J\":" << scene::jsonNumber(r.E0_J) << ",\"E_end_J\":" << scene::jsonNumber(r.E_end_J)
+		<< ",\"energy_loss_J\":" << scene::jsonNumber(r.energy_loss_J) << ",\"plastic_work_J\":" << scene::jsonNumber(r.plastic_work_J)
+		<< ",\"other_loss_J\":" << scene::jsonNumber(r.other_loss_J) << ",\"analytic_J\":" << scene::jsonNumber(r.analytic_J)
+		<< ",\"theta_pass_rad\":" << scene::jsonNumber(r.theta_pass_rad) << ",\"plastic_moment_Nm\":" << scene::jsonNumber(r.plastic_moment_Nm)
+		<< ",\"error_pct\":" << scene::jsonNumber(r.error_pct) << ",\"plastic_rotation_rad\":" << scene::jsonNumber(r.plastic_rotation_rad)
+		<< ",\"bend_angle_rad\":" << scene::jsonNumber(r.bend_angle_rad)
+		<< ",\"end_bend_angle_rad\":" << scene::jsonNumber(r.end_bend_angle_rad) << ",\"impact_speed_m_s\":" << scene::jsonNumber(r.impact_speed_m_s)
+		<< ",\"friction\":" << scene::jsonNumber(r.friction) << ",\"striker_radius_m\":" << scene::jsonNumber(r.striker_radius_m)
+		<< ",\"anvil_edge_radius_m\":" << scene::jsonNumber(r.anvil_radius_m) << ",\"anvil_taper_rad\":" << scene::jsonNumber(r.anvil_taper_rad)
 		<< ",\"broken\":" << flag(r.broken) << ",\"passed_anvils\":" << flag(r.passed_anvils) << ",\"over_the_top\":" << flag(r.over_the_top)
-		<< ",\"max_bend_rad\":" << number(r.max_bend_rad) << ",\"tunnelled\":" << flag(r.tunnelled) << ",\"finite\":" << flag(r.finite)
-		<< ",\"max_energy_gain_J\":" << number(r.max_energy_gain_J) << ",\"max_penetration_m\":" << number(r.max_penetration_m)
-		<< ",\"max_speed_m_s\":" << number(r.max_speed_m_s) << ",\"max_distance_m\":" << number(r.max_distance_m)
-		<< ",\"hammer_angle_end_rad\":" << number(r.hammer_angle_end_rad);
+		<< ",\"max_bend_rad\":" << scene::jsonNumber(r.max_bend_rad) << ",\"tunnelled\":" << flag(r.tunnelled) << ",\"finite\":" << flag(r.finite)
+		<< ",\"max_energy_gain_J\":" << scene::jsonNumber(r.max_energy_gain_J) << ",\"max_penetration_m\":" << scene::jsonNumber(r.max_penetration_m)
+		<< ",\"max_speed_m_s\":" << scene::jsonNumber(r.max_speed_m_s) << ",\"max_distance_m\":" << scene::jsonNumber(r.max_distance_m)
+		<< ",\"hammer_angle_end_rad\":" << scene::jsonNumber(r.hammer_angle_end_rad);
 	std::string why;
 	const CharpyVerdict verdict = classifyCharpyRun(r, &why);
 	std::string accuracyWhy;

@@ -4,31 +4,21 @@
 #include <cstdio>
 #include <sstream>
 
+#include "scene/JsonNumber.h"
+
 namespace game
 {
-namespace
-{
-std::string num(double value)
-{
-	if (!std::isfinite(value)) return "null";
-	char text[64];
-	std::snprintf(text, sizeof text, "%.9g", value);
-	return text;
-}
-
-}  // namespace
-
 std::string toJson(const WreckingBallParameters& p, const WreckingBallResult& r)
 {
 	std::ostringstream o;
 	o << "{\"scene\":\"wrecking-ball\",\"method\":\"" << plastic::jointMethodName(p.method) << "\",\"solver\":\"" << plastic::solverKindName(p.solver.solver)
-	  << "\",\"iterations\":" << p.solver.iterations << ",\"internal_step_s\":" << num(p.solver.internal_step_s) << ",\"frame_rate_hz\":" << num(p.frame_rate_hz)
-	  << ",\"plastic_moment_Nm\":" << num(r.estimate.plastic_moment_nm) << ",\"max_plastic_rotation_rad\":" << num(p.max_plastic_rotation_rad)
-	  << ",\"release_energy_J\":" << num(r.estimate.release_energy_j) << ",\"estimated_impact_speed_m_s\":" << num(r.estimate.impact_speed_m_s)
-	  << ",\"impact_kinetic_J\":" << num(r.impact_kinetic_j) << ",\"impact_speed_m_s\":" << num(r.impact_speed_m_s)
-	  << ",\"gravity_work_J\":" << num(r.gravity_work_j) << ",\"kinetic_J\":" << num(r.kinetic_j) << ",\"elastic_J\":" << num(r.elastic_j)
-	  << ",\"plastic_booked_J\":" << num(r.plastic_booked_j) << ",\"plastic_measured_J\":" << num(r.plastic_measured_j)
-	  << ",\"dissipated_J\":" << num(r.dissipated_j) << ",\"max_energy_gain_J\":" << num(r.max_energy_gain_j) << ",\"yielded_joints\":" << r.yielded_joints
+	  << "\",\"iterations\":" << p.solver.iterations << ",\"internal_step_s\":" << scene::jsonNumber(p.solver.internal_step_s) << ",\"frame_rate_hz\":" << scene::jsonNumber(p.frame_rate_hz)
+	  << ",\"plastic_moment_Nm\":" << scene::jsonNumber(r.estimate.plastic_moment_nm) << ",\"max_plastic_rotation_rad\":" << scene::jsonNumber(p.max_plastic_rotation_rad)
+	  << ",\"release_energy_J\":" << scene::jsonNumber(r.estimate.release_energy_j) << ",\"estimated_impact_speed_m_s\":" << scene::jsonNumber(r.estimate.impact_speed_m_s)
+	  << ",\"impact_kinetic_J\":" << scene::jsonNumber(r.impact_kinetic_j) << ",\"impact_speed_m_s\":" << scene::jsonNumber(r.impact_speed_m_s)
+	  << ",\"gravity_work_J\":" << scene::jsonNumber(r.gravity_work_j) << ",\"kinetic_J\":" << scene::jsonNumber(r.kinetic_j) << ",\"elastic_J\":" << scene::jsonNumber(r.elastic_j)
+	  << ",\"plastic_booked_J\":" << scene::jsonNumber(r.plastic_booked_j) << ",\"plastic_measured_J\":" << scene::jsonNumber(r.plastic_measured_j)
+	  << ",\"dissipated_J\":" << scene::jsonNumber(r.dissipated_j) << ",\"max_energy_gain_J\":" << scene::jsonNumber(r.max_energy_gain_j) << ",\"yielded_joints\":" << r.yielded_joints
 	  << ",\"broken_joints\":" << r.broken_joints << ",\"broken\":[";
 	bool first = true;
 	for (const FrameJointResult& j : r.joints)
@@ -41,12 +31,12 @@ std::string toJson(const WreckingBallParameters& p, const WreckingBallResult& r)
 	for (size_t i = 0; i < r.joints.size(); i++)
 	{
 		const FrameJointResult& j = r.joints[i];
-		o << (i ? "," : "") << "{\"name\":\"" << j.name << "\",\"booked_rotation_rad\":" << num(j.booked_rotation_rad)
-		  << ",\"measured_rotation_rad\":" << num(j.measured_rotation_rad) << ",\"booked_work_J\":" << num(j.booked_work_j)
-		  << ",\"measured_work_J\":" << num(j.measured_work_j) << ",\"broken\":" << (j.broken ? "true" : "false") << ",\"broken_at_s\":" << num(j.broken_at_s) << "}";
+		o << (i ? "," : "") << "{\"name\":\"" << j.name << "\",\"booked_rotation_rad\":" << scene::jsonNumber(j.booked_rotation_rad)
+		  << ",\"measured_rotation_rad\":" << scene::jsonNumber(j.measured_rotation_rad) << ",\"booked_work_J\":" << scene::jsonNumber(j.booked_work_j)
+		  << ",\"measured_work_J\":" << scene::jsonNumber(j.measured_work_j) << ",\"broken\":" << (j.broken ? "true" : "false") << ",\"broken_at_s\":" << scene::jsonNumber(j.broken_at_s) << "}";
 	}
-	o << "],\"frames\":" << r.frames << ",\"internal_steps\":" << r.internal_steps << ",\"simulated_s\":" << num(r.simulated_s) << ",\"wall_s\":" << num(r.wall_s)
-	  << ",\"real_time_factor\":" << num(r.real_time_factor) << ",\"max_frame_wall_ms\":" << num(1e3 * r.max_frame_wall_s)
+	o << "],\"frames\":" << r.frames << ",\"internal_steps\":" << r.internal_steps << ",\"simulated_s\":" << scene::jsonNumber(r.simulated_s) << ",\"wall_s\":" << scene::jsonNumber(r.wall_s)
+	  << ",\"real_time_factor\":" << scene::jsonNumber(r.real_time_factor) << ",\"max_frame_wall_ms\":" << scene::jsonNumber(1e3 * r.max_frame_wall_s)
 	  << ",\"solver_fallbacks\":" << r.solver_fallbacks << ",\"finite\":" << (r.finite ? "true" : "false") << "}";
 	return o.str();
 }
@@ -74,8 +64,8 @@ std::string jointsCsv(const WreckingBallResult& r)
 	std::ostringstream o;
 	o << "joint,plastic_moment_Nm,booked_rotation_rad,measured_rotation_rad,booked_work_J,measured_work_J,broken,broken_at_s\n";
 	for (const FrameJointResult& j : r.joints)
-		o << j.name << "," << num(j.plastic_moment_nm) << "," << num(j.booked_rotation_rad) << "," << num(j.measured_rotation_rad) << "," << num(j.booked_work_j)
-		  << "," << num(j.measured_work_j) << "," << (j.broken ? 1 : 0) << "," << num(j.broken_at_s) << "\n";
+		o << j.name << "," << scene::jsonNumber(j.plastic_moment_nm) << "," << scene::jsonNumber(j.booked_rotation_rad) << "," << scene::jsonNumber(j.measured_rotation_rad) << "," << scene::jsonNumber(j.booked_work_j)
+		  << "," << scene::jsonNumber(j.measured_work_j) << "," << (j.broken ? 1 : 0) << "," << scene::jsonNumber(j.broken_at_s) << "\n";
 	return o.str();
 }
 
@@ -84,8 +74,8 @@ std::string historyHeader() { return "time_s,gravity_work_J,kinetic_J,elastic_J,
 std::string historyRow(double time_s, const WreckingBallResult& r)
 {
 	std::ostringstream o;
-	o << num(time_s) << "," << num(r.gravity_work_j) << "," << num(r.kinetic_j) << "," << num(r.elastic_j) << "," << num(r.plastic_booked_j) << ","
-	  << num(r.plastic_measured_j) << "," << num(r.dissipated_j) << "," << r.yielded_joints << "," << r.broken_joints << "\n";
+	o << scene::jsonNumber(time_s) << "," << scene::jsonNumber(r.gravity_work_j) << "," << scene::jsonNumber(r.kinetic_j) << "," << scene::jsonNumber(r.elastic_j) << "," << scene::jsonNumber(r.plastic_booked_j) << ","
+	  << scene::jsonNumber(r.plastic_measured_j) << "," << scene::jsonNumber(r.dissipated_j) << "," << r.yielded_joints << "," << r.broken_joints << "\n";
 	return o.str();
 }
 }  // namespace game

@@ -9,6 +9,7 @@
 
 #include "City.h"
 #include "scene/FlagTable.h"
+#include "scene/JsonNumber.h"
 
 namespace
 {
@@ -32,13 +33,6 @@ scene::Flags<CityParameters> cityFlags()
 	return f;
 }
 
-std::string number(double x)
-{
-	if (!std::isfinite(x)) return "null";
-	char text[40];
-	std::snprintf(text, sizeof text, "%.9g", x);
-	return text;
-}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -82,11 +76,11 @@ int main(int argc, char** argv)
 		finite = finite && r.finite;
 		if (json)
 			o << (k ? "," : "") << "{\"mode\":\"" << game::cityModeName(modes[k]) << "\",\"buildings\":" << p.buildings << ",\"hit\":" << p.hit
-			  << ",\"idle_step_us\":" << number(r.idle_step_us) << ",\"step_us\":" << number(r.step_us) << ",\"impact_energy_J\":" << number(r.impact_energy_j)
-			  << ",\"plastic_energy_J\":" << number(r.plastic_energy_j) << ",\"bodies_max\":" << r.bodies_max << ",\"joints_max\":" << r.joints_max
+			  << ",\"idle_step_us\":" << scene::jsonNumber(r.idle_step_us) << ",\"step_us\":" << scene::jsonNumber(r.step_us) << ",\"impact_energy_J\":" << scene::jsonNumber(r.impact_energy_j)
+			  << ",\"plastic_energy_J\":" << scene::jsonNumber(r.plastic_energy_j) << ",\"bodies_max\":" << r.bodies_max << ",\"joints_max\":" << r.joints_max
 			  << ",\"idle_bodies_max\":" << r.idle_bodies_max << ",\"idle_joints_max\":" << r.idle_joints_max << ",\"subdivisions\":" << r.subdivisions
-			  << ",\"merges\":" << r.merges << ",\"first_impact_s\":" << number(r.first_impact_s) << ",\"internal_steps\":" << r.internal_steps
-			  << ",\"simulated_s\":" << number(r.simulated_s) << ",\"wall_s\":" << number(r.wall_s) << ",\"finite\":" << (r.finite ? "true" : "false") << "}";
+			  << ",\"merges\":" << r.merges << ",\"first_impact_s\":" << scene::jsonNumber(r.first_impact_s) << ",\"internal_steps\":" << r.internal_steps
+			  << ",\"simulated_s\":" << scene::jsonNumber(r.simulated_s) << ",\"wall_s\":" << scene::jsonNumber(r.wall_s) << ",\"finite\":" << (r.finite ? "true" : "false") << "}";
 		else
 			o << "city, " << game::cityModeName(modes[k]) << ": " << p.buildings << " buildings, " << p.hit << " hit; " << r.internal_steps << " internal steps in "
 			  << r.wall_s << " s (median step " << r.step_us << " us, before the first impact " << r.idle_step_us << " us)\n  balls' energy " << r.impact_energy_j
@@ -99,7 +93,7 @@ int main(int argc, char** argv)
 		const double idle = results[0].idle_step_us / results[2].idle_step_us, whole = results[0].wall_s / results[1].wall_s;
 		const double plastic = results[0].plastic_energy_j / results[1].plastic_energy_j;
 		if (json)
-			o << ",{\"idle_jit_over_rigid\":" << number(idle) << ",\"run_jit_over_jointed\":" << number(whole) << ",\"plastic_jit_over_jointed\":" << number(plastic) << "}";
+			o << ",{\"idle_jit_over_rigid\":" << scene::jsonNumber(idle) << ",\"run_jit_over_jointed\":" << scene::jsonNumber(whole) << ",\"plastic_jit_over_jointed\":" << scene::jsonNumber(plastic) << "}";
 		else
 			o << "ratios: before the first impact jit / rigid " << idle << "; the whole run jit / jointed " << whole << "; plastic work jit / jointed " << plastic << "\n";
 	}

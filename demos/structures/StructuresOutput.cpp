@@ -5,30 +5,24 @@
 #include <cstdio>
 #include <sstream>
 
+#include "scene/JsonNumber.h"
+
 namespace structures
 {
 namespace
 {
-std::string number(double value)
-{
-	if (!std::isfinite(value)) return "null";
-	char text[64];
-	std::snprintf(text, sizeof text, "%.9g", value);
-	return text;
-}
-
 // "key":value pairs in order
 class Json
 {
 public:
-	Json& add(const char* key, double value) { return raw(key, number(value)); }
+	Json& add(const char* key, double value) { return raw(key, scene::jsonNumber(value)); }
 	Json& add(const char* key, long value) { return raw(key, std::to_string(value)); }
 	Json& add(const char* key, bool value) { return raw(key, value ? "true" : "false"); }
 	Json& add(const char* key, const std::string& value) { return raw(key, "\"" + value + "\""); }
 	Json& add(const char* key, const std::vector<double>& values)
 	{
 		std::string s = "[";
-		for (size_t i = 0; i < values.size(); i++) s += (i ? "," : "") + number(values[i]);
+		for (size_t i = 0; i < values.size(); i++) s += (i ? "," : "") + scene::jsonNumber(values[i]);
 		return raw(key, s + "]");
 	}
 	Json& add(const char* key, const std::vector<std::string>& values)
@@ -184,7 +178,7 @@ std::string toSummary(const PaperClipParameters& p, const PaperClipResult& r)
 		<< " steps (" << r.simulated_s << " s simulated)\n";
 	out << "  wire " << p.wire_diameter_m * 1e3 << " mm bent +-" << p.bend_amplitude_rad << " rad every " << p.cycle_period_s << " s; Mp " << a.plastic_moment_nm
 		<< " N m; Coffin-Manson theta_f " << a.ductility_rotation_rad << " rad, c " << a.ductility_exponent << "\n";
-	out << "  " << (r.broken ? "broke after " + number(r.cycles_to_break) + " cycles" : std::string("did not break")) << " (Coffin-Manson and Miner on the driven angle: "
+	out << "  " << (r.broken ? "broke after " + scene::jsonNumber(r.cycles_to_break) + " cycles" : std::string("did not break")) << " (Coffin-Manson and Miner on the driven angle: "
 		<< a.cycles_to_break << " cycles; constant amplitude from the start: " << a.constant_amplitude_cycles << "), fatigue damage " << r.fatigue_damage << "\n";
 	out << "  hand's work " << r.hand_work_j << " J = booked plastic " << r.plastic_work_j << " J + elastic " << r.elastic_j << " J + kinetic change "
 		<< r.kinetic_j - r.start_kinetic_j << " J (balance error " << r.energy_balance_error_pct << " %); peak moment " << r.peak_moment_nm << " N m\n";
@@ -205,7 +199,7 @@ std::string hysteresisSvg(const PaperClipParameters& p, const PaperClipResult& r
 	svg << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height << "\" font-family=\"sans-serif\" font-size=\"12\">\n";
 	svg << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
 	std::snprintf(buf, sizeof buf, "paper clip, %s: moment / Mp against rotation; %s", plastic::jointMethodName(p.solver.method),
-				  r.broken ? ("broke after " + number(r.cycles_to_break) + " cycles (rule: " + number(r.answer.cycles_to_break) + ")").c_str() : "not broken");
+				  r.broken ? ("broke after " + scene::jsonNumber(r.cycles_to_break) + " cycles (rule: " + scene::jsonNumber(r.answer.cycles_to_break) + ")").c_str() : "not broken");
 	svg << "<text x=\"" << left << "\" y=\"22\">" << buf << "</text>\n";
 	// axes and the +-Mp lines
 	svg << "<line x1=\"" << X(-xMax) << "\" y1=\"" << Y(0) << "\" x2=\"" << X(xMax) << "\" y2=\"" << Y(0) << "\" stroke=\"black\"/>\n";
@@ -213,8 +207,8 @@ std::string hysteresisSvg(const PaperClipParameters& p, const PaperClipResult& r
 	for (double m : {1.0, -1.0})
 		svg << "<line x1=\"" << X(-xMax) << "\" y1=\"" << Y(m) << "\" x2=\"" << X(xMax) << "\" y2=\"" << Y(m) << "\" stroke=\"gray\" stroke-dasharray=\"4 4\"/>\n";
 	svg << "<text x=\"" << X(xMax) - 60 << "\" y=\"" << Y(1) - 4 << "\" fill=\"gray\">M = Mp</text>\n";
-	svg << "<text x=\"" << (left + width - right) / 2 - 40 << "\" y=\"" << height - 12 << "\">rotation, rad (+-" << number(xMax) << ")</text>\n";
-	svg << "<text x=\"12\" y=\"" << top + 10 << "\">M / Mp (+-" << number(yMax) << ")</text>\n";
+	svg << "<text x=\"" << (left + width - right) / 2 - 40 << "\" y=\"" << height - 12 << "\">rotation, rad (+-" << scene::jsonNumber(xMax) << ")</text>\n";
+	svg << "<text x=\"12\" y=\"" << top + 10 << "\">M / Mp (+-" << scene::jsonNumber(yMax) << ")</text>\n";
 	svg << "<polyline fill=\"none\" stroke=\"#c03000\" stroke-width=\"1.2\" points=\"";
 	const size_t stride = std::max<size_t>(1, r.hysteresis.size() / 4000);
 	for (size_t i = 0; i < r.hysteresis.size(); i += stride)
