@@ -27,7 +27,7 @@ struct CantileverScene::State
 		  beam(rig.world(), scene::requireValid(beamSpec(p)), &rig.ground()),
 		  load(*beam.segments().back(), tipPoint(beam), btVector3(0, btScalar(-answer.collapse_load_n), 0), p.follower_load),
 		  actuator(*beam.segments().back(), tipPoint(beam), btVector3(0, -1, 0), btVector3(btScalar(p.length_m), 0, 0), driftPath(p), actuatorStiffness(p, beam), tipMass_kg(beam)),
-		  test(collapseTestSettings(p, p.ramp_rate_per_s, answer.collapse_ratio)),
+		  test(p, p.ramp_rate_per_s, answer.collapse_ratio),
 		  ledger(btVector3(0, 0, 0))
 	{
 	}

@@ -17,14 +17,10 @@ void validateCollapseRamp(const CollapseRamp& ramp, std::vector<std::string>& e)
 	scene::requireRange(e, "hold", ramp.hold_s, 1e-3, 100, "s");
 }
 
-CollapseTestSettings collapseTestSettings(const CollapseRamp& ramp, double slowRate_per_s, double collapseFactor)
-{
-	return {slowRate_per_s, ramp.fast_ramp_rate_per_s, ramp.slow_from_fraction * collapseFactor, ramp.collapse_rate_rad_s, ramp.rate_window_s,
-			ramp.mechanism_rotation_rad, ramp.hold_s};
-}
-
-CollapseTest::CollapseTest(const CollapseTestSettings& s)
-	: m_s(s), m_ramp(s.slow_rate_per_s, s.fast_rate_per_s, s.slow_from_factor), m_detector(s.collapse_rate_rad_s, s.rate_window_s)
+CollapseTest::CollapseTest(const CollapseRamp& ramp, double slowRate_per_s, double collapseFactor)
+	: m_s(ramp),
+	  m_ramp(slowRate_per_s, ramp.fast_ramp_rate_per_s, ramp.slow_from_fraction * collapseFactor),
+	  m_detector(ramp.collapse_rate_rad_s, ramp.rate_window_s)
 {
 }
 

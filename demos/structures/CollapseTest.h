@@ -13,17 +13,6 @@
 
 namespace structures
 {
-struct CollapseTestSettings
-{
-	double slow_rate_per_s = 0.02;
-	double fast_rate_per_s = 0.2;
-	double slow_from_factor = 0.9;
-	double collapse_rate_rad_s = 0.05;
-	double rate_window_s = 0.1;
-	double mechanism_rotation_rad = 0.05;
-	double hold_s = 2.0;
-};
-
 // The ramp as a scene's parameters give it (the cantilever's and the portal's derive from it): the load factor rises
 // at fast_ramp_rate_per_s up to slow_from_fraction of the plastic-analysis collapse factor, then at the scene's
 // ramp_rate_per_s, until a joint turns faster than collapse_rate_rad_s (over rate_window_s); then it is held: a
@@ -40,13 +29,12 @@ struct CollapseRamp
 
 // Appends "name: value is not in range" for every field out of its range (named as the runners' flags).
 void validateCollapseRamp(const CollapseRamp& ramp, std::vector<std::string>& errors);
-// The test's settings for a scene's ramp, its slow rate and the plastic-analysis collapse factor.
-CollapseTestSettings collapseTestSettings(const CollapseRamp& ramp, double slowRate_per_s, double collapseFactor);
 
 class CollapseTest
 {
 public:
-	explicit CollapseTest(const CollapseTestSettings& s);
+	// the ramp, the scene's slow rate (from slow_from_fraction x collapseFactor on) and its plastic-analysis collapse factor
+	CollapseTest(const CollapseRamp& ramp, double slowRate_per_s, double collapseFactor);
 	double factor() const { return m_ramp.factor(); }
 	void advance(double step_s) { m_ramp.advance(step_s); }
 	// after each step, with the joints' rotations measured on the bodies
@@ -59,7 +47,7 @@ public:
 	std::vector<int> mechanism(const std::vector<double>& rotations_rad) const { return m_detector.mechanism(rotations_rad); }
 
 private:
-	CollapseTestSettings m_s;
+	CollapseRamp m_s;
 	scene::LoadRamp m_ramp;
 	CollapseDetector m_detector;
 	double m_heldSince_s = 0;

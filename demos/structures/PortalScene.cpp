@@ -54,7 +54,7 @@ struct PortalScene::State
 		  kneeRight(*columnRight.segments().front(), btVector3(0, 0, btScalar(-columnRight.segmentLength_m() / 2)), btVector3(0, btScalar(-p.knee_load_n), 0), false),
 		  actuator(*columnLeft.segments().back(), btVector3(0, 0, btScalar(columnLeft.segmentLength_m() / 2)), btVector3(1, 0, 0), btVector3(0, h, 0), swayPath(p),
 				   actuatorStiffness(p, columnLeft), kneeMass_kg(columnLeft)),
-		  test(collapseTestSettings(p, p.ramp_rate_per_s, answer.collapse_factor)),
+		  test(p, p.ramp_rate_per_s, answer.collapse_factor),
 		  ledger(btVector3(0, 0, 0))
 	{
 	}

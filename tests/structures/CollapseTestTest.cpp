@@ -10,16 +10,14 @@ using namespace structures;
 
 namespace
 {
-CollapseTestSettings settings()
-{
-	CollapseTestSettings s;  // slow 0.02/s, fast 0.2/s up to 0.9, 0.05 rad/s over 0.1 s, 0.05 rad, hold 2 s
-	return s;
-}
+// slow 0.02/s, fast 0.2/s up to 0.9 (the ramp's defaults: 0.9 of a collapse factor of 1), 0.05 rad/s over 0.1 s,
+// 0.05 rad, hold 2 s
+CollapseTest defaultTest() { return CollapseTest(CollapseRamp{}, 0.02, 1.0); }
 }  // namespace
 
 TEST(CollapseTest, ElasticTurningWithTheLoadIsNoCollapse)
 {
-	CollapseTest test(settings());
+	CollapseTest test = defaultTest();
 	const double dt = 1e-3;
 	for (int i = 1; i <= 20000; i++)  // 20 s: an elastic joint turning 0.1 rad per unit load factor
 	{
@@ -33,7 +31,7 @@ TEST(CollapseTest, ElasticTurningWithTheLoadIsNoCollapse)
 
 TEST(CollapseTest, RunawayAboveOneIsTheCollapseWithItsJoints)
 {
-	CollapseTest test(settings());
+	CollapseTest test = defaultTest();
 	const double dt = 1e-3;
 	double theta = 0;  // a rigid-plastic mechanism: accelerates in proportion to the load above 1
 	double omega = 0;
@@ -53,7 +51,7 @@ TEST(CollapseTest, RunawayAboveOneIsTheCollapseWithItsJoints)
 
 TEST(CollapseTest, SofteningThatStopsUnderAHeldLoadIsLoadedFurther)
 {
-	CollapseTest test(settings());
+	CollapseTest test = defaultTest();
 	const double dt = 1e-3;
 	int i = 0;
 	// a joint that jumps 0.02 rad at 0.95 (a hinge forming elsewhere) and then stays, runaway above 1.1
