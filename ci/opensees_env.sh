@@ -1,24 +1,24 @@
 #!/usr/bin/env bash
-# The Python environment of the OpenSees peer (ci/opensees_cantilever.py): a venv under the build tree with the
+# The Python environment of the OpenSees peer (ci/models/opensees_cantilever.py): a venv under the build tree with the
 # pinned openseespy, made once and reused. Prints the venv's python on stdout.
 #   bash ci/opensees_env.sh            -> prints e.g. build/opensees-venv/bin/python
 #   bash ci/opensees_env.sh CMD ARGS   -> runs CMD ARGS with that python first on PATH (PEER_PYTHON set)
 # OPENSEES_VENV overrides the venv's folder. Exit 77 (ctest's skip code here) with a message naming the package
 # when openseespy cannot be installed or does not import.
 # openseespylinux's wheel ships libblas.so.3 and liblapack.so.3, but its liblapack does not find its libblas
-# unless Debian's libblas3 is installed; ci/opensees_cantilever.py load_opensees() loads the wheel's libblas first,
+# unless Debian's libblas3 is installed; ci/models/opensees_cantilever.py load_opensees() loads the wheel's libblas first,
 # and the check below imports openseespy that way, so neither libblas3 nor liblapack3 is needed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . ci/pinned_venv.sh
-OPENSEESPY_VERSION=3.7.1.2  # pinned; ci/opensees_cantilever.py OPENSEESPY_VERSION says the same
+OPENSEESPY_VERSION=3.7.1.2  # pinned; ci/models/opensees_cantilever.py OPENSEESPY_VERSION says the same
 venv="${OPENSEES_VENV:-build/opensees-venv}"
 python="$venv/bin/python"
 check() {
 	"$python" - "$OPENSEESPY_VERSION" <<-'EOF'
 		import sys
 		from importlib import metadata
-		sys.path.insert(0, "ci")
+		sys.path.insert(0, "ci/models")
 		import opensees_cantilever as oc
 		if metadata.version("openseespy") != sys.argv[1]:
 		    sys.exit(f"openseespy {metadata.version('openseespy')} is installed, not {sys.argv[1]}")

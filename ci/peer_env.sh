@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The Python environment of the MuJoCo peer (ci/mujoco_charpy.py, ci/peer_sweep.py): a venv under the build
+# The Python environment of the MuJoCo peer (ci/models/mujoco_charpy.py, ci/peer_sweep.py): a venv under the build
 # tree with the pinned mujoco, made once and reused. Prints the venv's python on stdout.
 #   bash ci/peer_env.sh            -> prints e.g. build/peer-venv/bin/python
 #   bash ci/peer_env.sh CMD ARGS   -> runs CMD ARGS with that python first on PATH (PEER_PYTHON set)
@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . ci/pinned_venv.sh
-MUJOCO_VERSION=4.0.0  # pinned; ci/mujoco_charpy.py MUJOCO_VERSION says the same
+MUJOCO_VERSION=4.0.0  # pinned; ci/models/mujoco_charpy.py MUJOCO_VERSION says the same
 venv="${PEER_VENV:-build/peer-venv}"
 python="$venv/bin/python"
 have() { [ -x "$python" ] && "$python" -c "import mujoco, sys; sys.exit(mujoco.__version__ != '$MUJOCO_VERSION')" 2>/dev/null; }

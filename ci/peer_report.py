@@ -87,7 +87,7 @@ def section(peer, ours):
 
 ## Peer: MuJoCo {version} (same frame steps, timed the same way)
 
-The same Charpy test in MuJoCo (`ci/mujoco_charpy.py`, swept by `ci/peer_sweep.py` into `charpy-peer.csv`, parameters
+The same Charpy test in MuJoCo (`ci/models/mujoco_charpy.py`, swept by `ci/peer_sweep.py` into `charpy-peer.csv`, parameters
 from {peer[0].get('parameters_from', '?')}): two rigid halves joined at the notch by a hinge whose `frictionloss` is
 Mp = {f(number(peer[0], 'plastic_moment_Nm'), '{:.2f}')} N m, {striker}, anvils
 {mm('anvil_gap_m')} mm apart with {anvils}, a {f(number(peer[0], 'hammer_mass_kg'), '{:g}')} kg hammer at

@@ -6,7 +6,7 @@ CSV row per run: the peer beside our methods in REPORT.md.
                                                [--quick] [mujoco_charpy flags, e.g. --friction=0.1]
 
 With --runner the peer takes the runner's Mp, impact speed and whatever geometry its --json names
-(ci/mujoco_charpy.py --from-runner); without it, the standard geometry (ISO 148-1). MuJoCo's timestep is the
+(ci/models/mujoco_charpy.py --from-runner); without it, the standard geometry (ISO 148-1). MuJoCo's timestep is the
 frame step (it has no contact substeps). Runs are made one after another in this process (one core; MuJoCo
 steps on one thread), each timed from building the model to its last step, like the runner's wall_s.
 Written whole (tmp file + rename).
@@ -16,6 +16,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "models"))
 import charpy_sweep  # noqa: E402
 import mujoco_charpy  # noqa: E402
 from sweep import csvfile  # noqa: E402

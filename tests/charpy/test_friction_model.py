@@ -10,8 +10,9 @@ import sys
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-CI = os.path.join(HERE, "..", "..", "ci")
+CI = os.path.join(HERE, "..", "..", "ci", "models")
 sys.path.insert(0, CI)
+sys.path.insert(1, os.path.dirname(CI))  # ci/: the sweep and report tools
 from charpy_friction_model import CharpyFrictionModel, STANDARD  # noqa: E402
 
 RUNNER = None

@@ -1,4 +1,4 @@
-"""The MuJoCo peer (ci/mujoco_charpy.py) against the analytic Mp * theta_pass at a converged step, its parameters
+"""The MuJoCo peer (ci/models/mujoco_charpy.py) against the analytic Mp * theta_pass at a converged step, its parameters
 and bad input, and the peer sweep and report section. Run by ctest through ci/peer_env.sh (the pinned mujoco in
 the build tree's venv), which skips it (77) only when mujoco cannot be installed.
 
@@ -12,8 +12,9 @@ import tempfile
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-CI = os.path.join(HERE, "..", "..", "ci")
+CI = os.path.join(HERE, "..", "..", "ci", "models")
 sys.path.insert(0, CI)
+sys.path.insert(1, os.path.dirname(CI))  # ci/: the sweep and report tools
 import mujoco_charpy as mc  # noqa: E402
 import peer_report  # noqa: E402
 from sweep import csvfile  # noqa: E402
@@ -126,7 +127,7 @@ class ParameterTest(unittest.TestCase):
 class SweepTest(unittest.TestCase):
     def test_quick_sweep_and_report_section(self):
         out = os.path.join(tempfile.mkdtemp(), "charpy-peer.csv")
-        done = subprocess.run([sys.executable, os.path.join(CI, "peer_sweep.py"), "--quick", f"--out={out}"],
+        done = subprocess.run([sys.executable, os.path.join(os.path.dirname(CI), "peer_sweep.py"), "--quick", f"--out={out}"],
                               capture_output=True, text=True, timeout=300)
         self.assertEqual(done.returncode, 0, done.stderr)
         rows = csvfile.read_rows(out)
@@ -136,7 +137,7 @@ class SweepTest(unittest.TestCase):
         self.assertIn(f"## Peer: MuJoCo {mc.MUJOCO_VERSION}", text)
         self.assertIn("| 0.1 |", text)
         self.assertIn("diverged (reset)", text)  # 1 ms
-        done = subprocess.run([sys.executable, os.path.join(CI, "peer_sweep.py"), "--quick", f"--out={out}", "--dt-s=1"],
+        done = subprocess.run([sys.executable, os.path.join(os.path.dirname(CI), "peer_sweep.py"), "--quick", f"--out={out}", "--dt-s=1"],
                               capture_output=True, text=True)
         self.assertEqual(done.returncode, 2)
         self.assertIn("the sweep sets the time step", done.stderr)

@@ -1,4 +1,4 @@
-"""The MuJoCo structures peer (ci/mujoco_structures.py): its cantilever is the project's (segment masses and
+"""The MuJoCo structures peer (ci/models/mujoco_structures.py): its cantilever is the project's (segment masses and
 inertias, Mp and Mp/L against the runner), its energy bookkeeping read from MuJoCo's constraint forces, the collapse
 load and the mechanisms at its stiffest friction rows, the creep report/STRUCTURES-MUJOCO.md describes, and the
 quick report. Run by ctest through ci/peer_env.sh (the pinned mujoco in the build tree's venv), which skips it (77)
@@ -13,8 +13,9 @@ import tempfile
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-CI = os.path.join(HERE, "..", "..", "ci")
+CI = os.path.join(HERE, "..", "..", "ci", "models")
 sys.path.insert(0, CI)
+sys.path.insert(1, os.path.dirname(CI))  # ci/: the sweep and report tools
 import mujoco_structures as ms  # noqa: E402
 from sweep import csvfile  # noqa: E402
 

@@ -1,4 +1,4 @@
-"""The OpenSees peer (ci/opensees_cantilever.py): its cantilever pushover against closed forms under linear geometry
+"""The OpenSees peer (ci/models/opensees_cantilever.py): its cantilever pushover against closed forms under linear geometry
 (elastic, elastic-perfectly plastic, bilinear), its mesh convergence at the drifts the project compares, its cyclic
 mode and its command line. Run through ci/opensees_env.sh (the pinned openseespy in a venv), which exits 77 (skip)
 only when openseespy cannot be installed; run by another python without openseespy, this file exits 77 too.
@@ -15,8 +15,9 @@ import sys
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-CI = os.path.join(HERE, "..", "..", "ci")
+CI = os.path.join(HERE, "..", "..", "ci", "models")
 sys.path.insert(0, CI)
+sys.path.insert(1, os.path.dirname(CI))  # ci/: the sweep and report tools
 import opensees_cantilever as oc  # noqa: E402
 
 SCRIPT = os.path.join(CI, "opensees_cantilever.py")

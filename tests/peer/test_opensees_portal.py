@@ -1,4 +1,4 @@
-"""The OpenSees portal peer (ci/opensees_portal.py, issue 23's large displacements) against closed forms: the elastic
+"""The OpenSees portal peer (ci/models/opensees_portal.py, issue 23's large displacements) against closed forms: the elastic
 sway stiffness of a fixed-base portal by slope-deflection, its fall under the knee loads (P-Delta), and the sway
 mechanism's second-order load at a large drift. Run through ci/opensees_env.sh, which exits 77 (skip) only when
 openseespy cannot be installed; run by another python without openseespy, this file exits 77 too.
@@ -14,8 +14,9 @@ import sys
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-CI = os.path.join(HERE, "..", "..", "ci")
+CI = os.path.join(HERE, "..", "..", "ci", "models")
 sys.path.insert(0, CI)
+sys.path.insert(1, os.path.dirname(CI))  # ci/: the sweep and report tools
 import opensees_portal as op  # noqa: E402
 
 # the project's portal (demos/structures/Portal.h): 4 m x 3 m, 50 x 100 mm steel, E 200 GPa, fy 400 MPa

@@ -3,13 +3,13 @@
 portal frame with fibre sections in OpenSees (openseespy), corotational, the knees loaded down and then the left knee
 pushed along x to given drifts.
 
-  bash ci/opensees_env.sh python3 ci/opensees_portal.py --knee-load-n 100e3 --drifts 0.05,0.1,0.2
+  bash ci/opensees_env.sh python3 ci/models/opensees_portal.py --knee-load-n 100e3 --drifts 0.05,0.1,0.2
         [--span-m 4] [--height-m 3] [--width-m 0.05] [--depth-m 0.10] [--youngs-modulus-pa 200e9]
         [--yield-stress-pa 400e6] [--hardening-ratio 1e-6] [--elements 4] [--fibres 100] [--step-m 0.002]
 
 The model (ndm 2, ndf 3): columns from (0, 0) and (L, 0) up to the knees at height h, the beam between the knees, each
 member in --elements forceBeamColumn elements of 5 Gauss-Lobatto points on a fibre rectangle of Steel01 (E, fy,
-b = --hardening-ratio: elastic-perfectly plastic at 1e-6, as ci/opensees_cantilever.py explains), corotational
+b = --hardening-ratio: elastic-perfectly plastic at 1e-6, as ci/models/opensees_cantilever.py explains), corotational
 geometry, both bases fixed. Gravity: --knee-load-n down at each knee in ten load-controlled steps, then held
 (loadConst). Sway: a reference load of 1 N along +x at the left knee, displacement controlled, so the load factor is H
 in newtons. Printed as JSON: H h / (4 Mp) (Mp = fy b d^2 / 4) at each drift (the left knee's x displacement / h),

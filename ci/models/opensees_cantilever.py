@@ -2,7 +2,7 @@
 """The OpenSees peer of the cantilever pushover (issue 23): a steel cantilever with a fibre section in OpenSees
 (openseespy), pushed at its tip to given drifts, as an independent reference for the project's plastic joints.
 
-  bash ci/opensees_env.sh python3 ci/opensees_cantilever.py [--length-m 2.0] [--width-m 0.05] [--depth-m 0.10]
+  bash ci/opensees_env.sh python3 ci/models/opensees_cantilever.py [--length-m 2.0] [--width-m 0.05] [--depth-m 0.10]
         [--youngs-modulus-pa 200e9] [--yield-stress-pa 400e6] [--hardening-ratio 0.01] [--material steel01|steel02]
         [--drifts 0.05,0.10 | --cyclic-drifts 0.05,-0.05,0.05] [--geometry corotational|linear]
         [--elements 8] [--integration-points 5] [--fibres 100] [--step-m 0.001] [--format json|markdown]

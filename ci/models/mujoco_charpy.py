@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """The Charpy impact test in MuJoCo: a peer of our Bullet scene, built from the same parameters.
 
-  ci/mujoco_charpy.py [--from-runner=build/bin/charpy] [--from-json=FILE] [--NAME=VALUE ...] [--json]
-  ci/mujoco_charpy.py --list-parameters
+  ci/models/mujoco_charpy.py [--from-runner=build/bin/charpy] [--from-json=FILE] [--NAME=VALUE ...] [--json]
+  ci/models/mujoco_charpy.py --list-parameters
 
 The model: the 10 x 10 x 55 mm steel specimen as two rigid halves joined at the notch by a hinge (axis Y,
 at mid-ligament) whose `frictionloss` is the plastic moment Mp = fy * b * h^2 / 4 (a rigid-plastic moment:

@@ -24,7 +24,7 @@ Model (one half of the specimen, by symmetry; plane X-Z, X = impact direction, Z
   exactly; the contacts self-lock when the equilibrium has no solution with positive contact forces.
 Inertia (the halves' kinetic energy, impacts) is not in the model.
 
-Usage: python3 ci/charpy_friction_model.py [--mu=0.1] [--sweep=0,0.3,0.05] [--json] [geometry flags]
+Usage: python3 ci/models/charpy_friction_model.py [--mu=0.1] [--sweep=0,0.3,0.05] [--json] [geometry flags]
 """
 import argparse
 import json
