@@ -60,7 +60,6 @@ public:
 	const SolverSettings& settings() const { return m_settings; }
 	double step_s() const { return m_settings.world.internal_step_s; }
 	double time_s() const { return m_time_s; }
-	long steps() const { return m_steps; }
 	// internal steps in which the direct or MLCP solver failed and sequential impulse solved the step instead (0 for SI)
 	int solverFallbacks() const { return m_world.solverFallbacks(); }
 	// the run so far: its internal steps, simulated time, wall time since start, fallbacks, and finite as the scene found it
