@@ -1,0 +1,170 @@
+// Patch 0036: with btDispatcherInfo::m_speculativeBoxBoxContacts, btBoxBoxDetector also reports boxes that are apart
+// by less than its m_maximumSeparation (the manifold's contact breaking threshold, set by btBoxBoxCollisionAlgorithm),
+// with points of positive distance. Checked against the geometry: two boxes face to face and edge to edge at known
+// gaps, and a box landing on a box at game steps, whose rebound is checked against an inelastic landing (restitution
+// 0: it stops, it does not bounce).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+#include "btBulletDynamicsCommon.h"
+#include "BulletCollision/CollisionDispatch/btBoxBoxDetector.h"
+
+namespace
+{
+// Collects what a detector reports.
+struct Points : public btDiscreteCollisionDetectorInterface::Result
+{
+	std::vector<btVector3> normals, points;
+	std::vector<double> distances;
+	void setShapeIdentifiersA(int, int) override {}
+	void setShapeIdentifiersB(int, int) override {}
+	void addContactPoint(const btVector3& normalOnBInWorld, const btVector3& pointInWorld, btScalar depth) override
+	{
+		normals.push_back(normalOnBInWorld);
+		points.push_back(pointInWorld);
+		distances.push_back(double(depth));
+	}
+};
+
+// box A (half extents a) at the origin, box B (half extents b) turned by `turn` and placed at `position`
+Points detect(const btVector3& a, const btVector3& b, const btQuaternion& turn, const btVector3& position, double maxSeparation)
+{
+	btBoxShape boxA(a), boxB(b);
+	btBoxBoxDetector detector(&boxA, &boxB);
+	detector.m_maximumSeparation = btScalar(maxSeparation);
+	btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+	input.m_transformA.setIdentity();
+	input.m_transformB.setIdentity();
+	input.m_transformB.setRotation(turn);
+	input.m_transformB.setOrigin(position);
+	Points out;
+	detector.getClosestPoints(input, out, nullptr);
+	return out;
+}
+}  // namespace
+
+TEST(SpeculativeBoxContacts, FacesApartAreReportedWithTheirGapOnlyWithinTheSeparation)
+{
+	// a 10 mm cube 0.2 mm above a 20 x 10 x 20 mm plate
+	const btVector3 plate(0.01f, 0.005f, 0.01f), cube(0.005f, 0.005f, 0.005f);
+	const btQuaternion none = btQuaternion::getIdentity();
+	for (double gap : {0.0002, 0.001})
+	{
+		const btVector3 above(0.001f, btScalar(0.01 + gap), -0.002f);
+		EXPECT_TRUE(detect(plate, cube, none, above, 0.0).distances.empty()) << "apart boxes are no contact by default";
+		EXPECT_TRUE(detect(plate, cube, none, above, gap / 2).distances.empty()) << "beyond the separation: none";
+		const Points p = detect(plate, cube, none, above, 2 * gap);
+		ASSERT_EQ(p.distances.size(), 4u) << "the cube's bottom face: four corners";
+		for (size_t i = 0; i < p.distances.size(); i++)
+		{
+			EXPECT_NEAR(p.distances[i], gap, 1e-7) << "gap " << gap;
+			EXPECT_NEAR(std::fabs(double(p.normals[i].y())), 1.0, 1e-6);
+			// the corners of the cube's face: x in {-0.004, 0.006}, z in {-0.007, 0.003}
+			EXPECT_NEAR(std::fabs(double(p.points[i].x()) - 0.001), 0.005, 1e-6);
+			EXPECT_NEAR(std::fabs(double(p.points[i].z()) + 0.002), 0.005, 1e-6);
+		}
+	}
+	// overlapping boxes are reported as before: depth negative
+	const Points deep = detect(plate, cube, none, btVector3(0, 0.0099f, 0), 0.001);
+	ASSERT_FALSE(deep.distances.empty());
+	for (double d : deep.distances) EXPECT_NEAR(d, -0.0001, 1e-7);
+}
+
+TEST(SpeculativeBoxContacts, CrossedEdgesApartAreReportedAtTheirDistance)
+{
+	// two long bars, crossed at right angles and turned 45 degrees about their axes, so that an edge of each faces
+	// the other: the closest points are on the two edges, `gap` apart
+	const double halfWidth = 0.005, halfLength = 0.05;
+	const btVector3 bar{btScalar(halfLength), btScalar(halfWidth), btScalar(halfWidth)};
+	const double edge = halfWidth * std::sqrt(2.0);  // from the axis to the edge of a bar turned 45 degrees
+	const btQuaternion turnA(btVector3(1, 0, 0), btScalar(M_PI / 4));
+	for (double gap : {0.0003, 0.002})
+	{
+		btBoxShape boxA(bar), boxB(bar);
+		btBoxBoxDetector detector(&boxA, &boxB);
+		detector.m_maximumSeparation = btScalar(2 * gap);
+		btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+		input.m_transformA.setIdentity();
+		input.m_transformA.setRotation(turnA);
+		// B along Z, turned 45 degrees about Z, above A
+		input.m_transformB.setIdentity();
+		input.m_transformB.setRotation(btQuaternion(btVector3(0, 0, 1), btScalar(M_PI / 4)) * btQuaternion(btVector3(0, 1, 0), btScalar(M_PI / 2)));
+		input.m_transformB.setOrigin(btVector3(0, btScalar(2 * edge + gap), 0));
+		Points out;
+		detector.getClosestPoints(input, out, nullptr);
+		ASSERT_EQ(out.distances.size(), 1u) << "gap " << gap;
+		EXPECT_NEAR(out.distances[0], gap, 2e-6) << "gap " << gap;
+		EXPECT_NEAR(std::fabs(double(out.normals[0].y())), 1.0, 1e-5);
+		Points none;
+		detector.m_maximumSeparation = btScalar(gap / 2);
+		detector.getClosestPoints(input, none, nullptr);
+		EXPECT_TRUE(none.distances.empty());
+	}
+}
+
+namespace
+{
+struct Landing
+{
+	double maxPenetration_m = 0;
+	double maxRebound_m_s = 0;  // the fastest upward speed after the first contact
+};
+
+// A 1 m cube (10 kg) dropped at 2 m/s onto a static 10 x 1 x 10 m box, restitution 0, at 60 Hz steps (3.3 cm a step),
+// with the breaking threshold Bullet gives a metre box (about 3.5 cm).
+Landing land(bool speculative)
+{
+	btDefaultCollisionConfiguration configuration;
+	btCollisionDispatcher dispatcher(&configuration);
+	btDbvtBroadphase broadphase;
+	btSequentialImpulseConstraintSolver solver;
+	btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
+	world.setGravity(btVector3(0, -9.81f, 0));
+	world.getDispatchInfo().m_speculativeBoxBoxContacts = speculative;
+	btBoxShape groundShape(btVector3(5, 0.5f, 5)), cubeShape(btVector3(0.5f, 0.5f, 0.5f));
+	btRigidBody ground(0, nullptr, &groundShape);
+	ground.getWorldTransform().setOrigin(btVector3(0, -0.5f, 0));
+	btVector3 inertia;
+	cubeShape.calculateLocalInertia(10, inertia);
+	btRigidBody cube(10, nullptr, &cubeShape, inertia);
+	cube.getWorldTransform().setOrigin(btVector3(0, 0.5f + 0.21f, 0));
+	cube.setLinearVelocity(btVector3(0, -2, 0));
+	cube.setActivationState(DISABLE_DEACTIVATION);
+	world.addRigidBody(&ground);
+	world.addRigidBody(&cube);
+	Landing l;
+	bool touched = false;
+	for (int i = 0; i < 120; i++)
+	{
+		world.stepSimulation(1.0f / 60, 0);
+		const double bottom = double(cube.getCenterOfMassPosition().y()) - 0.5;
+		l.maxPenetration_m = std::max(l.maxPenetration_m, -bottom);
+		touched = touched || bottom < 0.001;
+		if (touched)
+		{
+			l.maxRebound_m_s = std::max(l.maxRebound_m_s, double(cube.getLinearVelocity().y()));
+		}
+	}
+	world.removeRigidBody(&cube);
+	world.removeRigidBody(&ground);
+	return l;
+}
+}  // namespace
+
+TEST(SpeculativeBoxContacts, AFastBoxLandsWithoutSinkingInOrBouncingBack)
+{
+	const Landing upstream = land(false);
+	const Landing speculative = land(true);
+	std::printf("landing: upstream sinks %.4f m, rebounds at %.3f m/s; speculative sinks %.4f m, rebounds at %.3f m/s\n",
+				upstream.maxPenetration_m, upstream.maxRebound_m_s, speculative.maxPenetration_m, speculative.maxRebound_m_s);
+	// upstream: the cube sinks in by up to a step's travel and the contacts' correction throws it back up
+	EXPECT_GT(upstream.maxPenetration_m, 0.01);
+	EXPECT_GT(upstream.maxRebound_m_s, 0.05);
+	// speculative: it stops at the face (gravity sinks it by what one step of 1/60 s gives, 2.7 mm) and stays
+	EXPECT_LT(speculative.maxPenetration_m, 0.004);
+	EXPECT_LT(speculative.maxRebound_m_s, 0.05);
+}
