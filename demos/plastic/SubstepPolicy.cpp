@@ -10,46 +10,98 @@ namespace plastic
 {
 namespace
 {
-void reach(const btCollisionObject* object, double horizon_s, double clearance_m, btVector3& lo, btVector3& hi)
+const btRigidBody* movingBody(const btCollisionObject* object)
 {
-	object->getCollisionShape()->getAabb(object->getWorldTransform(), lo, hi);
-	const btRigidBody* body = btRigidBody::upcast(object);
-	if (!body || object->isStaticObject())
-	{
-		return;  // static objects keep their boxes
-	}
-	const double radius = double((hi - lo).length()) / 2;
-	const double travel = (double(body->getLinearVelocity().length()) + double(body->getAngularVelocity().length()) * radius) * horizon_s;
-	const btScalar grow = btScalar(travel + clearance_m);
-	lo -= btVector3(grow, grow, grow);
-	hi += btVector3(grow, grow, grow);
+	return object->isStaticObject() ? nullptr : btRigidBody::upcast(object);
 }
 
 bool overlap(const btVector3& aLo, const btVector3& aHi, const btVector3& bLo, const btVector3& bHi)
 {
 	return aLo.x() <= bHi.x() && bLo.x() <= aHi.x() && aLo.y() <= bHi.y() && bLo.y() <= aHi.y() && aLo.z() <= bHi.z() && bLo.z() <= aHi.z();
 }
+
+// The object's boxes, each grown by `grow`: one per child of a compound shape (a hammer's arm, head and striker;
+// the box of the whole compound would cover the air between them), else the shape's box.
+int boxes(const btCollisionObject* object, btScalar grow, btVector3* lo, btVector3* hi, int capacity)
+{
+	const btCollisionShape* shape = object->getCollisionShape();
+	int count = 0;
+	if (shape->isCompound())
+	{
+		const btCompoundShape* compound = static_cast<const btCompoundShape*>(shape);
+		if (compound->getNumChildShapes() <= capacity)
+		{
+			for (int i = 0; i < compound->getNumChildShapes(); i++)
+			{
+				compound->getChildShape(i)->getAabb(object->getWorldTransform() * compound->getChildTransform(i), lo[count], hi[count]);
+				count++;
+			}
+		}
+	}
+	if (count == 0)
+	{
+		shape->getAabb(object->getWorldTransform(), lo[0], hi[0]);
+		count = 1;
+	}
+	const btVector3 g(grow, grow, grow);
+	for (int i = 0; i < count; i++)
+	{
+		lo[i] -= g;
+		hi[i] += g;
+	}
+	return count;
+}
 }  // namespace
+
+double relativeSpeedBound_m_s(const btCollisionObject* mover, const btCollisionObject* other)
+{
+	const btRigidBody* m = movingBody(mover);
+	const btRigidBody* o = movingBody(other);
+	btVector3 lo, hi;
+	mover->getCollisionShape()->getAabb(mover->getWorldTransform(), lo, hi);
+	const btVector3 centre = m ? m->getCenterOfMassPosition() : mover->getWorldTransform().getOrigin();
+	const btVector3 up = (hi - centre).absolute(), down = (centre - lo).absolute();
+	const double reach = double(btVector3(btMax(up.x(), down.x()), btMax(up.y(), down.y()), btMax(up.z(), down.z())).length());
+	btVector3 velocity(0, 0, 0), spin(0, 0, 0);
+	if (m)
+	{
+		velocity = m->getLinearVelocity();
+		spin = m->getAngularVelocity();
+	}
+	if (o)
+	{
+		velocity -= o->getLinearVelocity() + o->getAngularVelocity().cross(centre - o->getCenterOfMassPosition());
+		spin -= o->getAngularVelocity();
+	}
+	return double(velocity.length()) + double(spin.length()) * reach;
+}
 
 bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
 					double horizon_s, double clearance_m)
 {
 	// no allocation: a scene asks this several times per frame
+	const int kCapacity = 16;  // children of a compound tested one by one; a larger compound is one box
+	btVector3 mLo[kCapacity], mHi[kCapacity], oLo[kCapacity], oHi[kCapacity];
 	for (const btCollisionObject* mover : movers)
 	{
-		btVector3 mLo, mHi;
-		reach(mover, horizon_s, clearance_m, mLo, mHi);
 		for (const btCollisionObject* other : others)
 		{
 			if (other == mover)
 			{
 				continue;
 			}
-			btVector3 oLo, oHi;
-			reach(other, horizon_s, clearance_m, oLo, oHi);
-			if (overlap(mLo, mHi, oLo, oHi))
+			const btScalar grow = btScalar(relativeSpeedBound_m_s(mover, other) * horizon_s + clearance_m);
+			const int numMover = boxes(mover, grow, mLo, mHi, kCapacity);
+			const int numOther = boxes(other, btScalar(0), oLo, oHi, kCapacity);
+			for (int i = 0; i < numMover; i++)
 			{
-				return true;
+				for (int j = 0; j < numOther; j++)
+				{
+					if (overlap(mLo[i], mHi[i], oLo[j], oHi[j]))
+					{
+						return true;
+					}
+				}
 			}
 		}
 	}

@@ -10,9 +10,18 @@ class btCollisionObject;
 
 namespace plastic
 {
-// Whether some body of `movers` can touch some object of `others` within horizon_s: each mover's bounding box is
-// grown by how far its fastest point can travel in that time (linear speed + angular speed x half its box
-// diagonal, plus clearance_m), and so is every moving object of `others`; static objects keep their boxes.
+// Whether some body of `movers` can touch some object of `others` within horizon_s. For each pair, the mover's
+// bounding box is grown by how far its points can move against the other's material in that time, plus clearance_m,
+// and tested against the other's box: in the other's moving frame the mover's centre of mass moves at
+// v_m - v_o - w_o x (c_m - c_o) and its points turn about it at w_m - w_o within its reach (the farthest corner of its
+// box from its centre of mass). Two bodies that move together (a specimen carried by the striker) do not close; a
+// body closing on a static one closes at its own speed. A compound shape's children have a box each (up to 16
+// children; a larger compound is one box), so the air between a hammer's arm and its striker is no contact.
+// A bound of the speed of any point of `mover` against the material of `other` at that point [m/s]: in `other`'s
+// moving frame, the mover's centre of mass moves at v_m - v_o - w_o x (c_m - c_o), and its points turn about it at
+// w_m - w_o within its reach (the farthest corner of its box from its centre of mass). Static objects do not move.
+double relativeSpeedBound_m_s(const btCollisionObject* mover, const btCollisionObject* other);
+
 bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
 					double horizon_s, double clearance_m = 0.001);
 

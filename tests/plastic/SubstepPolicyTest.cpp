@@ -2,6 +2,7 @@
 // a ball flying at a wall with a known arrival time.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -51,6 +52,50 @@ TEST(SubstepPolicy, ReachGrowsWithSpeedTimesHorizon)
 	EXPECT_TRUE(s.near(0.06));
 	s.ball->setLinearVelocity(btVector3(0, 0, 0));
 	EXPECT_FALSE(s.near(1e3));  // at rest it never arrives
+}
+
+TEST(SubstepPolicy, ReachIsMeasuredAgainstTheOthersMotion)
+{
+	// the wall is a body that moves: a ball travelling with it never closes on it, a wall that comes at a ball at rest
+	// arrives when the ball would have arrived at it
+	BallAndWall s(0.5, 10.0);
+	btRigidBody wall(btScalar(5), nullptr, &s.wallShape, btVector3(1, 1, 1));
+	wall.setWorldTransform(s.wall->getWorldTransform());
+	wall.setLinearVelocity(btVector3(10, 0, 0));
+	EXPECT_FALSE(plastic::mayTouchWithin({s.ball.get()}, {&wall}, 1e3, 0.0));
+	s.ball->setLinearVelocity(btVector3(0, 0, 0));
+	wall.setLinearVelocity(btVector3(-10, 0, 0));
+	EXPECT_FALSE(plastic::mayTouchWithin({s.ball.get()}, {&wall}, 0.04, 0.0));
+	EXPECT_TRUE(plastic::mayTouchWithin({s.ball.get()}, {&wall}, 0.06, 0.0));
+	// a wall turning at 2 rad/s about its centre of mass, 0.7 m from the ball's centre: its material passes the ball
+	// at 1.4 m/s, and the ball's points (0.1 m from its centre, reach to its box corner 0.1 sqrt 3) turn against it
+	wall.setLinearVelocity(btVector3(0, 0, 0));
+	wall.setAngularVelocity(btVector3(0, 0, 2));
+	EXPECT_NEAR(plastic::relativeSpeedBound_m_s(s.ball.get(), &wall), 2.0 * 0.7 + 2.0 * 0.1 * std::sqrt(3.0), 1e-5);
+	EXPECT_NEAR(plastic::relativeSpeedBound_m_s(s.ball.get(), s.wall.get()), 0.0, 1e-12) << "a static wall does not move";
+}
+
+TEST(SubstepPolicy, ACompoundsChildrenHaveBoxesOfTheirOwn)
+{
+	// a hammer-like compound: two 0.2 m cubes 1 m apart. A ball at rest between them is no contact; the box of the
+	// whole compound would have held it
+	btBoxShape cube(btVector3(btScalar(0.1), btScalar(0.1), btScalar(0.1)));
+	btCompoundShape compound;
+	btTransform t;
+	t.setIdentity();
+	t.setOrigin(btVector3(btScalar(-0.5), 0, 0));
+	compound.addChildShape(t, &cube);
+	t.setOrigin(btVector3(btScalar(0.5), 0, 0));
+	compound.addChildShape(t, &cube);
+	btCollisionObject hammer;
+	hammer.setCollisionShape(&compound);
+	hammer.setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
+	btSphereShape ballShape(btScalar(0.05));
+	btRigidBody ball(btScalar(1), nullptr, &ballShape, btVector3(1, 1, 1));
+	EXPECT_FALSE(plastic::mayTouchWithin({&ball}, {&hammer}, 1.0, 0.01));
+	t.setOrigin(btVector3(btScalar(0.36), 0, 0));  // 9 mm from the right cube's face
+	ball.setWorldTransform(t);
+	EXPECT_TRUE(plastic::mayTouchWithin({&ball}, {&hammer}, 1.0, 0.01));
 }
 
 TEST(SubstepPolicy, OnlyThePartOfAFrameNearContactIsSubstepped)
