@@ -172,7 +172,7 @@ def write_markdown(rows, case_names, path, command):
     if any(c.startswith("direct") for c in case_names):
         lines += ["", "Cases starting with direct are the same runs with `--solver=direct` (btDirectJointSolver, patch",
                   "0019), which solves the specimen's joints and its contacts with the hammer and the anvils in one",
-                  "direct solve: the 2 g halves between the 19.5 kg hammer and the anvils are held whatever their mass",
+                  "direct solve: the 21 g halves between the 19.5 kg hammer and the anvils are held whatever their mass",
                   "ratio, where sequential impulse's iterations move each by its mass over the hammer's an iteration."]
     inaccurate, stopped = [], []
     for r in rows:

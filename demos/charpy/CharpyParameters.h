@@ -56,8 +56,12 @@ struct CharpyParameters
 	int solver_iterations = 10;
 	// the constraint solver: upstream's sequential impulse (the thesis' runs), or btDirectJointSolver (patch 0019),
 	// which solves the specimen's joints and contacts together and keeps it whole at internal steps of 0.1 to 1 ms,
-	// where sequential impulse lets the 19.5 kg hammer push the 2 g halves through the anvils
+	// where sequential impulse lets the 19.5 kg hammer push the 21 g halves through the anvils
 	plastic::SolverKind solver = plastic::SolverKind::SequentialImpulse;
+	// btDispatcherInfo::m_speculativeBoxBoxContacts (patch 0036): box pairs (the specimen's parts, the sharp anvils, the
+	// flat nose) get contacts before they overlap, within the contact breaking threshold, so a part that meets a face
+	// within a step stops at it instead of sinking in and being pushed out by the contacts' position correction
+	bool speculative_contacts = false;
 	double duration_s = 0.06;            // simulated time after the hammer is placed just before impact
 	// runCharpy ends the test before duration_s once the specimen is clear (CharpyScene::clear: every part behind the
 	// anvils and none able to touch the hammer or an anvil within a frame): its loss is final then. The scene itself

@@ -21,6 +21,7 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	r.auto_dt = parameters.auto_dt;
 	r.iterations = parameters.solver_iterations;
 	r.solver = plastic::solverKindName(parameters.solver);
+	r.speculative_contacts = parameters.speculative_contacts;
 	r.E0_J = scene.initialEnergy_j();
 	r.analytic_J = scene.section().analytic_loss_j;
 	r.theta_pass_rad = scene.section().theta_pass_rad;
@@ -51,6 +52,7 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 		}
 	}
 	r.end_time_s = scene.time_s();
+	r.hammer_exchange_bound_J = scene.hammerExchangeBound_j();
 	r.internal_steps = scene.internalSteps();
 	r.solver_fallbacks = scene.solverFallbacks();
 	r.finite = scene.finite();
@@ -85,7 +87,7 @@ std::string toJson(const CharpyResult& r)
 	std::ostringstream out;
 	auto flag = [](bool b) { return b ? "true" : "false"; };
 	out << "{\"method\":\"" << r.method << "\",\"dt\":" << scene::jsonNumber(r.dt_s) << ",\"auto_dt\":" << flag(r.auto_dt)
-		<< ",\"iterations\":" << r.iterations << ",\"solver\":\"" << r.solver << "\",\"solver_fallbacks\":" << r.solver_fallbacks << ",\"steps\":" << r.internal_steps << ",\"frames\":" << r.frames << ",\"end_time_s\":" << scene::jsonNumber(r.end_time_s)
+		<< ",\"iterations\":" << r.iterations << ",\"solver\":\"" << r.solver << "\",\"solver_fallbacks\":" << r.solver_fallbacks << ",\"speculative_contacts\":" << flag(r.speculative_contacts) << ",\"steps\":" << r.internal_steps << ",\"frames\":" << r.frames << ",\"end_time_s\":" << scene::jsonNumber(r.end_time_s) << ",\"hammer_exchange_bound_J\":" << scene::jsonNumber(r.hammer_exchange_bound_J)
 		<< ",\"wall_s\":" << scene::jsonNumber(r.wall_s) << ",\"E0_J\":" << scene::jsonNumber(r.E0_J) << ",\"E_end_J\":" << scene::jsonNumber(r.E_end_J)
 		<< ",\"energy_loss_J\":" << scene::jsonNumber(r.energy_loss_J) << ",\"plastic_work_J\":" << scene::jsonNumber(r.plastic_work_J)
 		<< ",\"other_loss_J\":" << scene::jsonNumber(r.other_loss_J) << ",\"analytic_J\":" << scene::jsonNumber(r.analytic_J)
@@ -118,11 +120,11 @@ std::string toSummary(const CharpyResult& r)
 {
 	char text[1024];
 	std::snprintf(text, sizeof text,
-				  "Charpy impact test, method %s, dt %g s%s, %d iterations, solver %s: %ld internal steps to %.2f ms in %.3f s wall time\n"
+				  "Charpy impact test, method %s, dt %g s%s, %d iterations, solver %s%s: %ld internal steps to %.2f ms in %.3f s wall time\n"
 				  "  hammer energy E0 %.2f J, impact speed %.3f m/s\n"
 				  "  energy loss %.2f J (plastic work %.2f J, other %.2f J); analytic Mp * theta_pass = %.2f N m * %.4f rad = %.2f J; error %+.2f %%\n"
 				  "  plastic rotation %.3f rad, broken %s, passed anvils %s%s, max energy gain %.3g J, max penetration %.3g m%s\n",
-				  r.method.c_str(), r.dt_s, r.auto_dt ? " (auto)" : "", r.iterations, r.solver.c_str(), r.internal_steps, 1000.0 * r.end_time_s, r.wall_s, r.E0_J,
+				  r.method.c_str(), r.dt_s, r.auto_dt ? " (auto)" : "", r.iterations, r.solver.c_str(), r.speculative_contacts ? ", speculative contacts" : "", r.internal_steps, 1000.0 * r.end_time_s, r.wall_s, r.E0_J,
 				  r.impact_speed_m_s, r.energy_loss_J, r.plastic_work_J, r.other_loss_J, r.plastic_moment_Nm, r.theta_pass_rad,
 				  r.analytic_J, r.error_pct, r.plastic_rotation_rad, r.broken ? "yes" : "no", r.passed_anvils ? "yes" : "no",
 				  r.tunnelled ? " (TUNNELLED: past the anvils with too little bend to fit the gap)" : "", r.max_energy_gain_J, r.max_penetration_m,

@@ -14,8 +14,10 @@ struct CharpyResult
 	int iterations = 0;
 	std::string solver;        // plastic::solverKindName of the parameters' solver
 	int solver_fallbacks = 0;  // internal steps in which a direct or MLCP solver fell back to sequential impulse
+	bool speculative_contacts = false;  // the parameters' speculative_contacts
 	long frames = 0;
 	long internal_steps = 0;
+	double hammer_exchange_bound_J = 0;  // CharpyScene::hammerExchangeBound_j at the end: what the parts can still give up
 	double end_time_s = 0;  // simulated time at the end: the duration, or when the specimen was clear (end_when_clear)
 	double wall_s = 0;
 	double E0_J = 0;

@@ -133,6 +133,7 @@ CharpyScene::CharpyScene(const CharpyParameters& parameters)
 	}
 	m_contactMovers.assign(m_parts.begin(), m_parts.end());
 	m_contactOthers.assign(m_anvils.begin(), m_anvils.end());
+	m_contactAnvils.assign(m_anvils.begin(), m_anvils.end());
 	if (m_hammer)
 	{
 		m_contactOthers.push_back(m_hammer);
@@ -177,6 +178,7 @@ void CharpyScene::createWorld()
 														&m_impl->collisionConfiguration);
 	m_world->setGravity(btVector3(0, btScalar(-kGravity_m_s2), 0));
 	m_world->getSolverInfo().m_numIterations = m_parameters.solver_iterations;
+	m_world->getDispatchInfo().m_speculativeBoxBoxContacts = m_parameters.speculative_contacts;
 }
 
 void CharpyScene::createAnvils()
@@ -586,6 +588,26 @@ bool CharpyScene::passedAnvils() const
 		}
 	}
 	return true;
+}
+
+bool CharpyScene::clear() const
+{
+	return passedAnvils() && !plastic::mayTouchWithin(m_contactMovers, m_contactAnvils, m_parameters.dt_s);
+}
+
+double CharpyScene::hammerExchangeBound_j() const
+{
+	if (!m_hammer)
+	{
+		return 0;
+	}
+	double bound = 0;
+	for (const btRigidBody* part : m_parts)
+	{
+		const double speed = plastic::relativeSpeedBound_m_s(part, m_hammer);
+		bound += 0.5 * speed * speed / double(part->getInvMass());
+	}
+	return bound;
 }
 
 bool CharpyScene::finite() const

@@ -65,9 +65,14 @@ public:
 	double hammerAngle_rad() const;  // pendulum rotation about Z from the impact position
 	bool broken() const;
 	bool passedAnvils() const;       // every part is behind the anvils' front plane (x < 0)
-	// the test is over: every part is behind the anvils and none can touch the hammer or an anvil within a frame step
-	// (each body's box grown by how far it can travel in that time)
-	bool clear() const { return passedAnvils() && !nearContact(m_parameters.dt_s); }
+	// the test is over: every part is behind the anvils and none can touch an anvil within a frame step
+	// (plastic::mayTouchWithin). The parts may still meet the hammer; the loss can change by that no more than
+	// hammerExchangeBound_j.
+	bool clear() const;
+	// the most the loss (the energy of the whole scene) can still change by the parts meeting the hammer: a contact
+	// between a part and the hammer dissipates at most the part's kinetic energy relative to it,
+	// 1/2 sum m (plastic::relativeSpeedBound_m_s)^2 [J]
+	double hammerExchangeBound_j() const;
 	bool overTheTop() const { return m_overTheTop; }  // a part got behind the anvils above their top, not through the gap
 	double maxPenetration_m() const { return m_maxPenetration_m; }
 	double maxSpeed_m_s() const { return m_maxSpeed_m_s; }        // fastest dynamic body, any step
@@ -100,6 +105,7 @@ private:
 	std::vector<btRigidBody*> m_anvils;
 	std::vector<const btCollisionObject*> m_contactMovers;  // the specimen's parts: what the substep policy asks about
 	std::vector<const btCollisionObject*> m_contactOthers;  // the anvils and the hammer
+	std::vector<const btCollisionObject*> m_contactAnvils;  // the anvils
 	std::vector<btTypedConstraint*> m_joints;  // views of the toolkit joints m_impl owns
 	btRigidBody* m_hammer = nullptr;
 	btTypedConstraint* m_middleJoint = nullptr;
