@@ -96,7 +96,7 @@ def accuracy(row, by_key):
         loss, converged = float(row["energy_loss_J"]), float(ref["energy_loss_J"])
         if converged > 0 and abs(loss - converged) > CONVERGED_TOLERANCE * converged:
             marks += "≠"
-            reasons.append(f"loss {loss:.1f} J is {100 * (loss - converged) / converged:+.0f} % off the converged "
+            reasons.append(f"loss {loss:.1f} J is {100 * (loss - converged) / converged:+.0f} % off the default run's "
                            f"{converged:.1f} J of `{ref['key']}`")
     return marks, "; ".join(reasons)
 
@@ -133,7 +133,7 @@ def write_markdown(rows, case_names, path, command):
         "to end, with plastic work less than half of the energy lost: its joints let go in the solver).",
         "Accuracy of a stable run, beside its symbol: ⊥ did not pass the anvils · ⊤ went over the anvils, not",
         "through the gap · ◐ a contact penetrated more than 10 % of the specimen width · ≠ the loss is more than",
-        "5 % off the converged run of the same method (the default case, in the same precision).",
+        "5 % off the default run of the same method (the default case, in the same precision; it is not the converged loss, which report/REPORT.md gives).",
         "Cells show the symbols and the energy loss in J.",
         "",
         "| case | " + " | ".join(METHODS) + " |",
