@@ -67,8 +67,9 @@ struct CharpyScene::Impl
 	std::vector<plastic::JointSpec> specs;   // what each was made from (the per-step caps follow it)
 	std::vector<btVector3> pivotsInA;        // each joint's pivot in its first part's frame (m)
 
+	// collisionGroup / collisionMask 0: Bullet's defaults for a static or a dynamic body
 	btRigidBody* addBody(btDiscreteDynamicsWorld* world, btCollisionShape* shape, double mass_kg, const btVector3& inertia,
-						 const btTransform& transform, double friction, double restitution)
+						 const btTransform& transform, double friction, double restitution, int collisionGroup = 0, int collisionMask = 0)
 	{
 		shapes.push_back(shape);
 		auto* motionState = new btDefaultMotionState(transform);
@@ -81,7 +82,14 @@ struct CharpyScene::Impl
 		{
 			body->setActivationState(DISABLE_DEACTIVATION);
 		}
-		world->addRigidBody(body);
+		if (collisionGroup != 0)
+		{
+			world->addRigidBody(body, collisionGroup, collisionMask);
+		}
+		else
+		{
+			world->addRigidBody(body);
+		}
 		bodies.push_back(body);
 		return body;
 	}
@@ -249,6 +257,12 @@ void CharpyScene::createSpecimen()
 	const int n = p.method == CharpyMethod::RigidBody ? 1 : p.parts;
 	const double partLength = L / n;
 	const double mass = p.density_kg_m3 * b * b * partLength;
+	// The parts are one specimen: they collide with the anvils and the hammer, not with each other. Each is a box of
+	// the full section, and a hinge's pivot lies inside the section (mid-ligament, 4 mm behind the struck face), so as
+	// a hinge folds the corners of its parts swing into the parts beyond their neighbours where the material would flow:
+	// with parts shorter than that (16 parts and more) they locked the middle hinge at asin(part length / 4 mm).
+	const int specimenGroup = btBroadphaseProxy::CharacterFilter << 1;
+	const int specimenMask = btBroadphaseProxy::AllFilter ^ specimenGroup;
 	for (int i = 0; i < n; i++)
 	{
 		btBoxShape* shape = m_impl->box(b / 2.0, b / 2.0, partLength / 2.0);
@@ -256,7 +270,7 @@ void CharpyScene::createSpecimen()
 		shape->calculateLocalInertia(btScalar(mass), inertia);
 		double z = -L / 2.0 + (i + 0.5) * partLength;
 		m_parts.push_back(m_impl->addBody(m_world.get(), shape, mass, inertia, translation(b / 2.0, p.specimen_bottom_y_m + b / 2.0, z),
-										  p.friction, 0.0));
+										  p.friction, 0.0, specimenGroup, specimenMask));
 	}
 }
 
