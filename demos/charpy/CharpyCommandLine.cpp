@@ -108,7 +108,7 @@ std::string charpyUsage()
 	std::string text =
 		"usage: charpy [--method=NAME] [--geometry=standard|thesis] [--json] [--history=FILE.csv] [--auto-dt] [--full-duration] [--speculative-contacts] [--list-methods] [flags]\n"
 		"Runs the Charpy impact test scene headless and prints the energy balance. The test ends once the specimen is clear\n"
-		"(every part behind the anvils, none able to touch the hammer or an anvil within a frame), or at --duration;\n"
+		"(every part behind the anvils, none able to touch an anvil within a frame), or at --duration;\n"
 		"  --full-duration      runs to --duration even after the specimen is clear\n"
 		"  --speculative-contacts  box pairs touch before they overlap (patch 0036), so parts do not sink in at coarse steps\n"
 		"  --geometry=thesis    (default) the thesis' scene: a flat striker nose as thick as the hammer, released from 2.8 rad\n"

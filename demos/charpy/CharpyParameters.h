@@ -64,8 +64,9 @@ struct CharpyParameters
 	bool speculative_contacts = false;
 	double duration_s = 0.06;            // simulated time after the hammer is placed just before impact
 	// runCharpy ends the test before duration_s once the specimen is clear (CharpyScene::clear: every part behind the
-	// anvils and none able to touch the hammer or an anvil within a frame): its loss is final then. The scene itself
-	// steps on to duration_s (the browser shows the swing).
+	// anvils and none able to touch an anvil within a frame). The parts may still meet the hammer after that (the
+	// result's kinetic_against_hammer_J says how much one such collision could dissipate). The scene itself steps on
+	// to duration_s (the browser shows the swing).
 	bool end_when_clear = true;
 
 	// brittle method: breaking force of the zero-limit joint, N (impulse threshold = force * internal dt)

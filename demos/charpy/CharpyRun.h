@@ -17,7 +17,7 @@ struct CharpyResult
 	bool speculative_contacts = false;  // the parameters' speculative_contacts
 	long frames = 0;
 	long internal_steps = 0;
-	double hammer_exchange_bound_J = 0;  // CharpyScene::hammerExchangeBound_j at the end: what the parts can still give up
+	double kinetic_against_hammer_J = 0;  // CharpyScene::kineticAgainstHammer_j at the end
 	double end_time_s = 0;  // simulated time at the end: the duration, or when the specimen was clear (end_when_clear)
 	double wall_s = 0;
 	double E0_J = 0;

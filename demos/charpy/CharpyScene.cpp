@@ -609,7 +609,7 @@ bool CharpyScene::clear() const
 	return passedAnvils() && !plastic::mayTouchWithin(m_contactMovers, m_contactAnvils, m_parameters.dt_s);
 }
 
-double CharpyScene::hammerExchangeBound_j() const
+double CharpyScene::kineticAgainstHammer_j() const
 {
 	if (!m_hammer)
 	{

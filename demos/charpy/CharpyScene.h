@@ -66,13 +66,12 @@ public:
 	bool broken() const;
 	bool passedAnvils() const;       // every part is behind the anvils' front plane (x < 0)
 	// the test is over: every part is behind the anvils and none can touch an anvil within a frame step
-	// (plastic::mayTouchWithin). The parts may still meet the hammer; the loss can change by that no more than
-	// hammerExchangeBound_j.
+	// (plastic::mayTouchWithin). The parts may still meet the hammer (kineticAgainstHammer_j).
 	bool clear() const;
-	// the most the loss (the energy of the whole scene) can still change by the parts meeting the hammer: a contact
-	// between a part and the hammer dissipates at most the part's kinetic energy relative to it,
-	// 1/2 sum m (plastic::relativeSpeedBound_m_s)^2 [J]
-	double hammerExchangeBound_j() const;
+	// the parts' kinetic energy against the hammer, 1/2 sum m (plastic::relativeSpeedBound_m_s)^2 [J]: the most one
+	// collision of them with the hammer could dissipate now. A scale of what ending at clear() leaves out, not a bound
+	// over the rest of a run (gravity and the swing change the speeds, and they can meet again).
+	double kineticAgainstHammer_j() const;
 	bool overTheTop() const { return m_overTheTop; }  // a part got behind the anvils above their top, not through the gap
 	double maxPenetration_m() const { return m_maxPenetration_m; }
 	double maxSpeed_m_s() const { return m_maxSpeed_m_s; }        // fastest dynamic body, any step

@@ -53,6 +53,15 @@ int boxes(const btCollisionObject* object, btScalar grow, btVector3* lo, btVecto
 }
 }  // namespace
 
+double relativeGravity_m_s2(const btCollisionObject* mover, const btCollisionObject* other)
+{
+	const btRigidBody* m = movingBody(mover);
+	const btRigidBody* o = movingBody(other);
+	const btVector3 gm = m ? m->getGravity() : btVector3(0, 0, 0);
+	const btVector3 go = o ? o->getGravity() : btVector3(0, 0, 0);
+	return double((gm - go).length());
+}
+
 double relativeSpeedBound_m_s(const btCollisionObject* mover, const btCollisionObject* other)
 {
 	const btRigidBody* m = movingBody(mover);
@@ -90,7 +99,8 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 			{
 				continue;
 			}
-			const btScalar grow = btScalar(relativeSpeedBound_m_s(mover, other) * horizon_s + clearance_m);
+			const btScalar grow = btScalar(relativeSpeedBound_m_s(mover, other) * horizon_s +
+										   0.5 * relativeGravity_m_s2(mover, other) * horizon_s * horizon_s + clearance_m);
 			const int numMover = boxes(mover, grow, mLo, mHi, kCapacity);
 			const int numOther = boxes(other, btScalar(0), oLo, oHi, kCapacity);
 			for (int i = 0; i < numMover; i++)

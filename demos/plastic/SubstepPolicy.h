@@ -11,7 +11,8 @@ class btCollisionObject;
 namespace plastic
 {
 // Whether some body of `movers` can touch some object of `others` within horizon_s. For each pair, the mover's
-// bounding box is grown by how far its points can move against the other's material in that time, plus clearance_m,
+// bounding box is grown by how far its points can move against the other's material in that time (their speed bound
+// times horizon_s, plus 1/2 their difference in gravity times horizon_s squared), plus clearance_m,
 // and tested against the other's box: in the other's moving frame the mover's centre of mass moves at
 // v_m - v_o - w_o x (c_m - c_o) and its points turn about it at w_m - w_o within its reach (the farthest corner of its
 // box from its centre of mass). Two bodies that move together (a specimen carried by the striker) do not close; a
@@ -21,6 +22,9 @@ namespace plastic
 // moving frame, the mover's centre of mass moves at v_m - v_o - w_o x (c_m - c_o), and its points turn about it at
 // w_m - w_o within its reach (the farthest corner of its box from its centre of mass). Static objects do not move.
 double relativeSpeedBound_m_s(const btCollisionObject* mover, const btCollisionObject* other);
+// The magnitude of the difference of the two bodies' gravity [m/s^2] (a static object's is 0): a body falling beside
+// a static one closes by 1/2 g h^2 more than its velocity says (1.4 mm in a 1/60 s frame).
+double relativeGravity_m_s2(const btCollisionObject* mover, const btCollisionObject* other);
 
 bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
 					double horizon_s, double clearance_m = 0.001);

@@ -75,6 +75,17 @@ TEST(SubstepPolicy, ReachIsMeasuredAgainstTheOthersMotion)
 	EXPECT_NEAR(plastic::relativeSpeedBound_m_s(s.ball.get(), s.wall.get()), 0.0, 1e-12) << "a static wall does not move";
 }
 
+TEST(SubstepPolicy, AFallingBodyClosesByHalfGTimesTheHorizonSquared)
+{
+	// a ball at rest 1 mm beside a static wall, falling towards it: 1/2 g h^2 is 1.36 mm in 1/60 s, 0.34 mm in 1/120 s
+	BallAndWall s(0.001, 0.0);
+	s.ball->setGravity(btVector3(btScalar(9.81), 0, 0));
+	EXPECT_TRUE(s.near(1.0 / 60));
+	EXPECT_FALSE(s.near(1.0 / 120));
+	s.ball->setGravity(btVector3(0, 0, 0));
+	EXPECT_FALSE(s.near(1.0 / 60));
+}
+
 TEST(SubstepPolicy, ACompoundsChildrenHaveBoxesOfTheirOwn)
 {
 	// a hammer-like compound: two 0.2 m cubes 1 m apart. A ball at rest between them is no contact; the box of the
@@ -93,9 +104,10 @@ TEST(SubstepPolicy, ACompoundsChildrenHaveBoxesOfTheirOwn)
 	btSphereShape ballShape(btScalar(0.05));
 	btRigidBody ball(btScalar(1), nullptr, &ballShape, btVector3(1, 1, 1));
 	EXPECT_FALSE(plastic::mayTouchWithin({&ball}, {&hammer}, 1.0, 0.01));
-	t.setOrigin(btVector3(btScalar(0.36), 0, 0));  // 9 mm from the right cube's face
+	t.setOrigin(btVector3(btScalar(0.341), 0, 0));  // its surface 9 mm from the right cube's face (at 0.4 m)
 	ball.setWorldTransform(t);
 	EXPECT_TRUE(plastic::mayTouchWithin({&ball}, {&hammer}, 1.0, 0.01));
+	EXPECT_FALSE(plastic::mayTouchWithin({&ball}, {&hammer}, 1.0, 0.008));
 }
 
 TEST(SubstepPolicy, OnlyThePartOfAFrameNearContactIsSubstepped)
