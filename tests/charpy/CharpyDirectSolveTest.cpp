@@ -132,3 +132,24 @@ TEST(CharpyDirectSolve, SpeculativeContactsKeepTheLossWithinThreePercentOfConver
 	const CharpyResult without = runCharpy(p);
 	EXPECT_GT(without.max_penetration_m, 0.0004) << "without speculative contacts the halves sink into the anvils";
 }
+
+// Patch 0036 removes a speculative point whose end has left the other box (the detection no longer reports it): at the
+// striker's corners such points outlived their feature and bent the joints near the anvils of a specimen of 32 parts
+// (163.7 J at 2 us, against 130.1 J without speculative contacts). The same specimen with and without them at 3 us
+// contact substeps: measured 132.9 and 130.2 J (at 2 us 134.5 and 130.1 J; 16 parts 130.8 and 129.8 J).
+TEST(CharpyDirectSolve, SpeculativeContactsOfAManyPartSpecimenAgreeWithoutThemAtFineSteps)
+{
+	for (int parts : {32})
+	{
+		CharpyParameters p = geometry(false);
+		p.parts = parts;
+		p.solver = plastic::SolverKind::DirectJoint;
+		p.contact_substep_s = 3e-6;
+		const CharpyResult without = runCharpy(p);
+		p.speculative_contacts = true;
+		const CharpyResult with = runCharpy(p);
+		EXPECT_TRUE(without.passed_anvils && with.passed_anvils) << parts;
+		EXPECT_NEAR(with.energy_loss_J, without.energy_loss_J, 0.05 * without.energy_loss_J) << parts << " parts";
+		EXPECT_NEAR(with.plastic_work_J, without.plastic_work_J, 0.05 * without.plastic_work_J) << parts << " parts";
+	}
+}
