@@ -95,12 +95,14 @@ TEST(CharpyDirectSolve, AtCoarseStepsTheLossIsNoMoreThanTheBookedWorkExplainsAnd
 
 // Speculative box-box contacts (patch 0036, --speculative-contacts): the specimen's halves, the sharp anvils and the flat
 // nose are boxes, which get contacts before they overlap (within the contact breaking threshold, 0.3 mm here), so at
-// contact steps over which the hammer closes less than that (4.4 m/s x 60 us = 0.26 mm) no half sinks into an anvil
-// and no position correction throws it back. The reference is the same scene converged: 2 us contact steps, checked
-// against the sequential-impulse solver at 2 us (129.0 J both, measured). Measured at 10-60 us contact steps and
-// frames of 0.1 ms, 1 ms and 1/60 s: 129.1-131.7 J in 94-478 internal steps; without speculative contacts, 125.2 J at
-// 50 us with the halves 0.6 mm deep in the anvils.
-TEST(CharpyDirectSolve, SpeculativeContactsKeepTheLossWithinThreePercentOfConvergedAtContactStepsUpToSixtyMicroseconds)
+// contact steps over which the hammer closes well within that (4.4 m/s x 30 us = 0.13 mm) no half sinks into an
+// anvil and no position correction throws it back. The reference is the same scene converged: 2 us contact steps,
+// checked against the sequential-impulse solver at 2 us (129.0 J both, measured). Measured (report/REPORT.md) at 10 and
+// 30 us contact steps and frames from 0.05 ms to 1/60 s: -0.4 to +2.2 % in 170-485 internal steps. At 60 us (0.26 mm
+// a step, near the threshold) 94-108 internal steps at 0.1 ms, 1 ms and 1/60 s frames within 2 %, but -8.7 to +3.5 %
+// over all frame steps (the halves sink up to 0.65 mm at 0.2 and 0.5 ms frames). Without speculative contacts, 125.2 J
+// at 50 us with the halves 0.6 mm deep in the anvils.
+TEST(CharpyDirectSolve, SpeculativeContactsKeepTheLossWithinThreePercentOfConvergedAtContactStepsUpToThirtyMicroseconds)
 {
 	CharpyParameters p = geometry(false);
 	p.solver = plastic::SolverKind::DirectJoint;
@@ -113,13 +115,15 @@ TEST(CharpyDirectSolve, SpeculativeContactsKeepTheLossWithinThreePercentOfConver
 		<< "the converged loss depends on the solver";
 	for (double substep : {1e-5, 3e-5, 6e-5})
 	{
-		for (double frame : {1e-4, 1e-3, 1.0 / 60})
+		for (double frame : {1e-4, 2e-4, 5e-4, 1e-3, 1.0 / 60})
 		{
 			p.contact_substep_s = substep;
 			p.dt_s = frame;
 			const CharpyResult r = runCharpy(p);
-			EXPECT_NEAR(r.energy_loss_J, converged.energy_loss_J, 0.03 * converged.energy_loss_J) << substep << " s in " << frame << " s frames";
-			EXPECT_LT(r.max_penetration_m, 0.0002) << substep << " s in " << frame << " s frames";
+			const double tolerance = substep <= 3e-5 ? 0.03 : 0.1;
+			EXPECT_NEAR(r.energy_loss_J, converged.energy_loss_J, tolerance * converged.energy_loss_J) << substep << " s in " << frame << " s frames";
+			// at 60 us the halves sink up to 0.65 mm (0.2 and 0.5 ms frames), under the 1 mm of the accuracy verdict
+			EXPECT_LT(r.max_penetration_m, substep <= 3e-5 ? 0.0002 : 0.001) << substep << " s in " << frame << " s frames";
 			if (substep == 6e-5)
 			{
 				EXPECT_LE(r.internal_steps, 110) << frame;
