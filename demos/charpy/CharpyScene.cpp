@@ -615,13 +615,13 @@ double CharpyScene::kineticAgainstHammer_j() const
 	{
 		return 0;
 	}
-	double bound = 0;
+	double kinetic = 0;
 	for (const btRigidBody* part : m_parts)
 	{
 		const double speed = plastic::relativeSpeedBound_m_s(part, m_hammer);
-		bound += 0.5 * speed * speed / double(part->getInvMass());
+		kinetic += 0.5 * speed * speed / double(part->getInvMass());
 	}
-	return bound;
+	return kinetic;
 }
 
 bool CharpyScene::finite() const

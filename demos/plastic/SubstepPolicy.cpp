@@ -91,9 +91,11 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 	// no allocation: a scene asks this several times per frame
 	const int kCapacity = 16;  // children of a compound tested one by one; a larger compound is one box
 	btVector3 mLo[kCapacity], mHi[kCapacity], oLo[kCapacity], oHi[kCapacity];
-	for (const btCollisionObject* mover : movers)
+	// an other's boxes do not grow: they are taken once, each mover's are grown by its reach against that other
+	for (const btCollisionObject* other : others)
 	{
-		for (const btCollisionObject* other : others)
+		const int numOther = boxes(other, btScalar(0), oLo, oHi, kCapacity);
+		for (const btCollisionObject* mover : movers)
 		{
 			if (other == mover)
 			{
@@ -102,7 +104,6 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 			const btScalar grow = btScalar(relativeSpeedBound_m_s(mover, other) * horizon_s +
 										   0.5 * relativeGravity_m_s2(mover, other) * horizon_s * horizon_s + clearance_m);
 			const int numMover = boxes(mover, grow, mLo, mHi, kCapacity);
-			const int numOther = boxes(other, btScalar(0), oLo, oHi, kCapacity);
 			for (int i = 0; i < numMover; i++)
 			{
 				for (int j = 0; j < numOther; j++)
