@@ -47,8 +47,8 @@ public:
 	explicit ContactSubstepPolicy(const ContactSubstepSettings& settings);
 
 	// Advances one frame: the part of the frame that reaches no contact within its own length is one step (or a
-	// few halves), the part in or near contact is cut into steps of at most contact_substep_s. The contact test
-	// is made again after every internal step. Returns the number of internal steps; -1, with no step, for a frame
+	// few halves), the part in or near contact is cut into equal steps of at most contact_substep_s. The contact
+	// test is made again after every internal step. Returns the number of internal steps; -1, with no step, for a frame
 	// that is not a positive finite time or when errors() is not empty.
 	int advance(double frame_s, const NearContact& nearContact, const Step& step) const;
 

@@ -98,11 +98,11 @@ TEST(CharpyDirectSolve, AtCoarseStepsTheLossIsNoMoreThanTheBookedWorkExplainsAnd
 // contact steps over which the hammer closes well within that (4.4 m/s x 30 us = 0.13 mm) no half sinks into an
 // anvil and no position correction throws it back. The reference is the same scene converged: 2 us contact steps,
 // checked against the sequential-impulse solver at 2 us (129.0 J both, measured). Measured (report/REPORT.md) at 10 and
-// 30 us contact steps and frames from 0.05 ms to 1/60 s: -0.4 to +2.2 % in 170-485 internal steps. At 60 us (0.26 mm
-// a step, near the threshold) 94-108 internal steps at 0.1 ms, 1 ms and 1/60 s frames within 2 %, but -8.7 to +3.5 %
-// over all frame steps (the halves sink up to 0.65 mm at 0.2 and 0.5 ms frames). Without speculative contacts, 125.2 J
-// at 50 us with the halves 0.6 mm deep in the anvils.
-TEST(CharpyDirectSolve, SpeculativeContactsKeepTheLossWithinThreePercentOfConvergedAtContactStepsUpToThirtyMicroseconds)
+// 30 us contact steps and frames from 0.1 ms to 1/60 s: -0.7 to +0.9 % in 171-485 internal steps. At 60 us (0.26 mm
+// a step, near the threshold) +0.7 to +2.8 % in 90-103 internal steps: the rest of a frame in contact is cut into
+// equal steps (before that, steps of 60 us and a short remainder gave -8.7 % and -8.0 % at 0.5 and 0.2 ms frames,
+// the halves 0.65 mm deep). Without speculative contacts, 125.2 J at 50 us with the halves 0.6 mm deep in the anvils.
+TEST(CharpyDirectSolve, SpeculativeContactsKeepTheLossWithinThreePercentOfConvergedAtThirtyMicrosecondsAndFiveAtSixty)
 {
 	CharpyParameters p = geometry(false);
 	p.solver = plastic::SolverKind::DirectJoint;
@@ -120,10 +120,10 @@ TEST(CharpyDirectSolve, SpeculativeContactsKeepTheLossWithinThreePercentOfConver
 			p.contact_substep_s = substep;
 			p.dt_s = frame;
 			const CharpyResult r = runCharpy(p);
-			const double tolerance = substep <= 3e-5 ? 0.03 : 0.1;
+			const double tolerance = substep <= 3e-5 ? 0.03 : 0.05;
 			EXPECT_NEAR(r.energy_loss_J, converged.energy_loss_J, tolerance * converged.energy_loss_J) << substep << " s in " << frame << " s frames";
-			// at 60 us the halves sink up to 0.65 mm (0.2 and 0.5 ms frames), under the 1 mm of the accuracy verdict
-			EXPECT_LT(r.max_penetration_m, substep <= 3e-5 ? 0.0002 : 0.001) << substep << " s in " << frame << " s frames";
+			// measured at most 0.12 mm at 30 us and 0.19 mm at 60 us
+			EXPECT_LT(r.max_penetration_m, substep <= 3e-5 ? 0.0002 : 0.0003) << substep << " s in " << frame << " s frames";
 			if (substep == 6e-5)
 			{
 				EXPECT_LE(r.internal_steps, 110) << frame;

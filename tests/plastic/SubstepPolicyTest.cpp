@@ -142,6 +142,33 @@ TEST(SubstepPolicy, OnlyThePartOfAFrameNearContactIsSubstepped)
 	}
 }
 
+TEST(SubstepPolicy, AFrameInContactIsCutIntoEqualSteps)
+{
+	// a body resting on the wall: every piece is near contact, so the whole frame is cut into equal steps of at most
+	// a substep, with no short remainder (a 0.2 ms frame in 60 us substeps is 4 x 50 us, not 3 x 60 us + 20 us)
+	const auto touching = [](double) { return true; };
+	const struct
+	{
+		double frame_s, substep_s;
+		int steps;
+	} cases[] = {{2e-4, 6e-5, 4}, {5e-4, 6e-5, 9}, {1e-3, 6e-5, 17}, {1.0 / 60.0, 6e-5, 278}, {1e-4, 1e-5, 10}, {1e-4, 1e-4, 1}, {3e-4, 1e-4, 3}};
+	for (const auto& c : cases)
+	{
+		plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{c.substep_s});
+		std::vector<double> steps;
+		EXPECT_EQ(c.steps, policy.advance(c.frame_s, touching, [&](double h) { steps.push_back(h); }));
+		ASSERT_EQ(size_t(c.steps), steps.size()) << c.frame_s << " s frame in " << c.substep_s << " s substeps";
+		double sum = 0;
+		for (double h : steps)
+		{
+			EXPECT_NEAR(h, c.frame_s / c.steps, 1e-12 * c.frame_s) << c.frame_s << " s frame in " << c.substep_s << " s substeps";
+			EXPECT_LE(h, c.substep_s * (1 + 1e-12));
+			sum += h;
+		}
+		EXPECT_NEAR(sum, c.frame_s, 1e-12 * c.frame_s);
+	}
+}
+
 TEST(SubstepPolicy, FarFromContactAFrameIsOneStep)
 {
 	BallAndWall s(10.0, 1.0);
