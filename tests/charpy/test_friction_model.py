@@ -64,6 +64,24 @@ class FrictionModelTest(unittest.TestCase):
                     self.assertLess(r["max_penetration_m"], 1e-4, r)
                     self.assertLess(abs(r["energy_loss_J"] - expected) / expected, 0.03, (mu, r["energy_loss_J"], expected))
 
+    def test_coarse_steps_with_the_direct_solve_and_speculative_contacts_match_the_model(self):
+        # issue 25: 0.06 ms contact substeps in 1 ms frames, btDirectJointSolver (its contacts have two friction rows,
+        # patch 0037: with one, friction 0.25 lost 14-15 % too little) and speculative box-box contacts. Measured
+        # (report/FRICTION.md): within 3 % of the model in 8 of the 10 runs with friction 0.05-0.25, these 8; not
+        # held: the ISO anvils at 0.25 (+3.9 %) and the sharp anvils at 0.2 (+23.6 %, friction keeps dragging the bent
+        # specimen for 11 ms), which README names.
+        coarse = ("--solver=direct", "--speculative-contacts", "--contact-substep=6e-5", "--dt=1e-3")
+        iso = ("--anvil-radius=0.001", "--anvil-taper=0.192")
+        cases = [((), 0.05), ((), 0.1), ((), 0.15), ((), 0.25), (iso, 0.05), (iso, 0.1), (iso, 0.15), (iso, 0.2)]
+        for anvils, mu in cases:
+            with self.subTest(anvils=anvils, mu=mu):
+                model = CharpyFrictionModel(**dict(STANDARD, anvil_radius_m=0.001 if anvils else 0.0))
+                r = run("--geometry=standard", *anvils, f"--friction={mu}", *coarse)
+                expected, _ = model.loss(mu)
+                self.assertTrue(r["passed_anvils"] and not r["over_the_top"], r)
+                self.assertLess(abs(r["energy_loss_J"] - expected) / expected, 0.03, (mu, r["energy_loss_J"], expected))
+                self.assertLess(r["steps"], 350, r["steps"])
+
     def test_the_thesis_flat_nose_jams_where_the_standard_striker_does_not(self):
         flat = run("--geometry=thesis", "--friction=0.1")
         edge = run("--geometry=standard", "--friction=0.1")
