@@ -169,6 +169,39 @@ TEST(SubstepPolicy, AFrameInContactIsCutIntoEqualSteps)
 	}
 }
 
+TEST(SubstepPolicy, WhenContactEndsMidFrameTheRestIsTakenInLongerSteps)
+{
+	// in contact for the first 5 ms of a 1/60 s frame: equal steps of at most 1 ms until then, then longer ones
+	double t = 0;
+	plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{1e-3});
+	std::vector<double> starts, steps;
+	const int n = policy.advance(
+		1.0 / 60.0, [&](double) { return t < 0.005; },
+		[&](double h) {
+			starts.push_back(t);
+			steps.push_back(h);
+			t += h;
+		});
+	EXPECT_EQ(n, int(steps.size()));
+	EXPECT_NEAR(t, 1.0 / 60.0, 1e-12);
+	bool longer = false;
+	for (size_t i = 0; i < steps.size(); i++)
+	{
+		EXPECT_GT(steps[i], 0);
+		if (starts[i] < 0.005 - 1e-12)
+		{
+			EXPECT_LE(steps[i], 1e-3 * (1 + 1e-9)) << "a step in contact, at " << starts[i] << " s";
+			EXPECT_NEAR(steps[i], steps[0], 1e-12) << "the steps in contact are equal";
+		}
+		else
+		{
+			longer = longer || steps[i] > 1e-3;
+		}
+	}
+	EXPECT_TRUE(longer) << "after the contact the frame went on in contact substeps";
+	EXPECT_LT(n, 17) << "the whole frame in 1 ms steps would be 17";
+}
+
 TEST(SubstepPolicy, FarFromContactAFrameIsOneStep)
 {
 	BallAndWall s(10.0, 1.0);
