@@ -88,6 +88,22 @@ class FrictionModelTest(unittest.TestCase):
         self.assertFalse(flat["passed_anvils"] and not flat["over_the_top"])
         self.assertTrue(edge["passed_anvils"])
 
+    def test_the_sweep_csv_keeps_every_column_of_a_settings_name_with_commas(self):
+        # the coarse-step settings are named "direct, speculative, 0.06 ms": unquoted, they broke every column after it
+        import csv
+        import tempfile
+        with tempfile.TemporaryDirectory() as out:
+            done = subprocess.run([sys.executable, os.path.join(HERE, "..", "..", "ci", "charpy_friction_sweep.py"),
+                                   f"--runner={RUNNER}", "--mus=0.1", f"--out-dir={out}"], capture_output=True, text=True)
+            self.assertEqual(done.returncode, 0, done.stderr)
+            with open(os.path.join(out, "charpy-friction.csv"), newline="") as f:
+                rows = list(csv.DictReader(f))
+        self.assertIn("direct, speculative, 0.06 ms", {r["settings"] for r in rows})
+        for r in rows:
+            self.assertIn(r["accuracy"], ("accurate", "did-not-pass", "over-the-top", "penetrated", "unstable"), r)
+            self.assertGreater(float(r["end_time_s"]), 0, r)
+            self.assertGreater(int(r["steps"]), 0, r)
+
     def test_bad_model_input_names_the_parameter(self):
         with self.assertRaisesRegex(ValueError, "gap"):
             CharpyFrictionModel(**dict(STANDARD, gap_m=0.06))
