@@ -9,8 +9,8 @@ runner's deviation from it). Files are written whole (temporary file, then renam
 Usage: python3 ci/charpy_friction_sweep.py --runner=build/bin/charpy [--out-dir=report] [--mus=0,0.05,...]
 """
 import argparse
-import io
 import csv
+import io
 import json
 import os
 import subprocess

@@ -3,10 +3,12 @@
 
 Usage: python3 test_friction_model.py RUNNER  (the charpy console runner)
 """
+import csv
 import json
 import os
 import subprocess
 import sys
+import tempfile
 import unittest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -90,8 +92,6 @@ class FrictionModelTest(unittest.TestCase):
 
     def test_the_sweep_csv_keeps_every_column_of_a_settings_name_with_commas(self):
         # the coarse-step settings are named "direct, speculative, 0.06 ms": unquoted, they broke every column after it
-        import csv
-        import tempfile
         with tempfile.TemporaryDirectory() as out:
             done = subprocess.run([sys.executable, os.path.join(HERE, "..", "..", "ci", "charpy_friction_sweep.py"),
                                    f"--runner={RUNNER}", "--mus=0.1", f"--out-dir={out}"], capture_output=True, text=True)
