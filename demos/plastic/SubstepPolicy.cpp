@@ -134,7 +134,7 @@ std::vector<std::string> validate(const ContactSubstepSettings& settings)
 
 ContactSubstepPolicy::ContactSubstepPolicy(const ContactSubstepSettings& settings) : m_settings(settings), m_errors(validate(settings)) {}
 
-int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact, const Step& step) const
+int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact, const Step& step)
 {
 	if (!(std::isfinite(frame_s) && frame_s > 0) || !m_errors.empty())
 	{
@@ -142,24 +142,39 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 	}
 	const double h = m_settings.contact_substep_s;
 	int steps = 0;
-	double remaining = frame_s;
+	double remaining = frame_s + m_owed_s;
+	m_owed_s = 0;
 	while (remaining > 1e-12 * frame_s)
 	{
 		double piece = remaining;
 		if (h > 0)
 		{
-			// cut in halves until a piece reaches no contact within its own length; where even a contact
-			// substep reaches one, the rest of the frame is cut into equal steps of at most a contact substep
-			// (not substeps and a short remainder: a 0.2 ms frame in 60 us substeps is four steps of 50 us, so
-			// every frame step gives the contacts steps of about the same length)
+			// cut in halves until a piece reaches no contact within its own length
 			while (piece > h && nearContact(piece))
 			{
 				piece /= 2;
 			}
-			if (piece < h)
+			const bool inContact = piece < h || (piece == remaining && nearContact(piece));
+			if (inContact)
 			{
-				const double pieces = std::ceil(remaining / h - 1e-9);  // no extra piece for a rounding error
-				piece = remaining / std::max(1.0, pieces);
+				// in or near contact the world keeps a clock of its own, in steps of the contact substep: a rest of
+				// the frame shorter than one is owed to the next frame (the world then lags the frame by less than a
+				// substep, as in upstream's fixed-step stepSimulation), so no frame step cuts a short step into the
+				// contacts; a rest that is a whole number of substeps is taken in equal steps
+				const double whole = std::round(remaining / h);
+				if (whole >= 1 && std::fabs(remaining - whole * h) <= 1e-9 * remaining)
+				{
+					piece = remaining / whole;
+				}
+				else if (remaining > h)
+				{
+					piece = h;
+				}
+				else
+				{
+					m_owed_s = remaining;
+					break;
+				}
 			}
 		}
 		step(piece);

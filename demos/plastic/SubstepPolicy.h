@@ -47,10 +47,16 @@ public:
 	explicit ContactSubstepPolicy(const ContactSubstepSettings& settings);
 
 	// Advances one frame: the part of the frame that reaches no contact within its own length is one step (or a
-	// few halves), the part in or near contact is cut into equal steps of at most contact_substep_s. The contact
-	// test is made again after every internal step. Returns the number of internal steps; -1, with no step, for a frame
-	// that is not a positive finite time or when errors() is not empty.
-	int advance(double frame_s, const NearContact& nearContact, const Step& step) const;
+	// few halves); in or near contact the world steps at contact_substep_s on a clock of its own, and what is left of
+	// the frame, less than a substep, is owed to the next frame (owed_s; as upstream's fixed-step stepSimulation lags
+	// its frames), so the frame step does not change the steps the contacts see. A rest of the frame that is a whole
+	// number of substeps is taken in that many equal steps. Out of contact, what is owed is stepped with the frame.
+	// The contact test is made again after every internal step. Returns the number of internal steps; -1, with no
+	// step, for a frame that is not a positive finite time or when errors() is not empty.
+	int advance(double frame_s, const NearContact& nearContact, const Step& step);
+
+	// frame time not yet stepped: the world lags the frames by this much, less than one contact substep [s]
+	double owed_s() const { return m_owed_s; }
 
 	const ContactSubstepSettings& settings() const { return m_settings; }
 	const std::vector<std::string>& errors() const { return m_errors; }
@@ -58,5 +64,6 @@ public:
 private:
 	ContactSubstepSettings m_settings;
 	std::vector<std::string> m_errors;
+	double m_owed_s = 0;
 };
 }  // namespace plastic

@@ -125,7 +125,9 @@ TEST(SubstepPolicy, OnlyThePartOfAFrameNearContactIsSubstepped)
 	EXPECT_EQ(n, int(steps.size()));
 	double sum = 0;
 	for (double h : steps) sum += h;
-	EXPECT_NEAR(sum, 1.0 / 60.0, 1e-12);
+	// what the steps leave of the frame, less than a substep, is owed to the next frame
+	EXPECT_LT(policy.owed_s(), 1e-3);
+	EXPECT_NEAR(sum + policy.owed_s(), 1.0 / 60.0, 1e-12);
 	// whole frame in contact substeps would be 17 steps; the approach takes only a few
 	EXPECT_LT(n, 17);
 	EXPECT_GT(n, 6);  // 6.7 ms from arrival to the frame's end are substepped
@@ -142,31 +144,63 @@ TEST(SubstepPolicy, OnlyThePartOfAFrameNearContactIsSubstepped)
 	}
 }
 
-TEST(SubstepPolicy, AFrameInContactIsCutIntoEqualSteps)
+TEST(SubstepPolicy, InContactTheWorldStepsAtTheSubstepOnItsOwnClock)
 {
-	// a body resting on the wall: every piece is near contact, so the whole frame is cut into equal steps of at most
-	// a substep, with no short remainder (a 0.2 ms frame in 60 us substeps is 4 x 50 us, not 3 x 60 us + 20 us)
+	// a body resting on the wall: every piece is near contact. The world steps at the contact substep whatever the
+	// frame step, and what is left of a frame, less than a substep, is owed to the next frame (a 0.2 ms frame in 60 us
+	// substeps is 3 x 60 us with 20 us owed; the next one is 3 x 60 us with 40 us owed; the third 4 x 60 us)
 	const auto touching = [](double) { return true; };
 	const struct
 	{
 		double frame_s, substep_s;
-		int steps;
-	} cases[] = {{2e-4, 6e-5, 4}, {5e-4, 6e-5, 9}, {1e-3, 6e-5, 17}, {1.0 / 60.0, 6e-5, 278}, {1e-4, 1e-5, 10}, {1e-4, 1e-4, 1}, {3e-4, 1e-4, 3}};
+	} cases[] = {{2e-4, 6e-5}, {1e-4, 6e-5}, {5e-4, 6e-5}, {1e-3, 6e-5}, {1.0 / 60.0, 6e-5}, {1e-4, 1e-5}, {3e-4, 1e-4}, {4e-5, 1e-4}};
 	for (const auto& c : cases)
 	{
 		plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{c.substep_s});
-		std::vector<double> steps;
-		EXPECT_EQ(c.steps, policy.advance(c.frame_s, touching, [&](double h) { steps.push_back(h); }));
-		ASSERT_EQ(size_t(c.steps), steps.size()) << c.frame_s << " s frame in " << c.substep_s << " s substeps";
-		double sum = 0;
-		for (double h : steps)
+		double frames = 0, stepped = 0;
+		for (int frame = 0; frame < 50; frame++)
 		{
-			EXPECT_NEAR(h, c.frame_s / c.steps, 1e-12 * c.frame_s) << c.frame_s << " s frame in " << c.substep_s << " s substeps";
-			EXPECT_LE(h, c.substep_s * (1 + 1e-12));
-			sum += h;
+			std::vector<double> steps;
+			const int n = policy.advance(c.frame_s, touching, [&](double h) { steps.push_back(h); });
+			ASSERT_EQ(size_t(n), steps.size());
+			frames += c.frame_s;
+			for (double h : steps)
+			{
+				EXPECT_NEAR(h, c.substep_s, 1e-9 * c.substep_s) << c.frame_s << " s frames in " << c.substep_s << " s substeps";
+				stepped += h;
+			}
+			EXPECT_GE(policy.owed_s(), 0);
+			EXPECT_LT(policy.owed_s(), c.substep_s * (1 - 1e-12));
+			EXPECT_NEAR(stepped + policy.owed_s(), frames, 1e-12 * frames) << "time lost or made after frame " << frame;
 		}
-		EXPECT_NEAR(sum, c.frame_s, 1e-12 * c.frame_s);
+		// the world never falls behind by a substep, so 50 frames are the whole number of substeps they hold
+		EXPECT_NEAR(stepped, c.substep_s * std::floor(50 * c.frame_s / c.substep_s + 1e-9), 1e-9 * stepped + 1e-15);
 	}
+	// a frame that is a whole number of substeps is that many equal steps, and nothing is owed
+	plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{1e-5});
+	std::vector<double> steps;
+	EXPECT_EQ(10, policy.advance(1e-4, touching, [&](double h) { steps.push_back(h); }));
+	EXPECT_EQ(0.0, policy.owed_s());
+	double sum = 0;
+	for (double h : steps) sum += h;
+	EXPECT_NEAR(sum, 1e-4, 1e-18);
+}
+
+TEST(SubstepPolicy, WhatIsOwedIsSteppedWithTheNextFrameOnceContactEnds)
+{
+	// in contact: a 0.1 ms frame in 60 us substeps owes 40 us; out of contact the next frame takes that and its own
+	// 0.1 ms in one step, and the world is back on the frames' clock
+	bool contact = true;
+	plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{6e-5});
+	std::vector<double> steps;
+	const auto step = [&](double h) { steps.push_back(h); };
+	EXPECT_EQ(1, policy.advance(1e-4, [&](double) { return contact; }, step));
+	EXPECT_NEAR(policy.owed_s(), 4e-5, 1e-15);
+	contact = false;
+	EXPECT_EQ(1, policy.advance(1e-4, [&](double) { return contact; }, step));
+	ASSERT_EQ(2u, steps.size());
+	EXPECT_NEAR(steps[1], 1.4e-4, 1e-15);
+	EXPECT_EQ(0.0, policy.owed_s());
 }
 
 TEST(SubstepPolicy, WhenContactEndsMidFrameTheRestIsTakenInLongerSteps)
@@ -218,7 +252,7 @@ TEST(SubstepPolicy, BadSettingsAreRefusedByName)
 	{ return false; };
 	const plastic::ContactSubstepPolicy negative(plastic::ContactSubstepSettings{-1e-3});
 	EXPECT_EQ(1u, negative.errors().size());
-	const plastic::ContactSubstepPolicy tooLong(plastic::ContactSubstepSettings{1.0});
+	plastic::ContactSubstepPolicy tooLong(plastic::ContactSubstepSettings{1.0});
 	ASSERT_EQ(1u, tooLong.errors().size());
 	EXPECT_NE(tooLong.errors().front().find("contact-substep: 1 is not in"), std::string::npos) << tooLong.errors().front();
 	EXPECT_EQ(-1, tooLong.advance(1.0 / 60.0, far, step));  // refused settings step nothing
