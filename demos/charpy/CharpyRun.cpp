@@ -37,13 +37,17 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 		*history << "time_s,potential_J,kinetic_J,elastic_J,total_J,plastic_work_J,bend_angle_rad,hammer_angle_rad\n";
 	}
 	double maxBend = 0;
+	int historySteps = 0;
 	while (!scene.done() && !(parameters.end_when_clear && scene.clear()))
 	{
 		scene.step();
 		r.frames++;
 		if (!scene.broken()) maxBend = std::max(maxBend, scene.endToEndBend_rad());  // folded while whole
-		if (history)
+		// a row per frame that moved the world: a frame shorter than a contact substep may step nothing (the world
+		// owes it to the next frame), and a row that repeats its time would say time stood still
+		if (history && scene.internalSteps() != historySteps)
 		{
+			historySteps = scene.internalSteps();
 			CharpyEnergies e = scene.energies();
 			char line[256];
 			std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", scene.time_s(), e.potential_j, e.kinetic_j,

@@ -149,12 +149,13 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 		double piece = remaining;
 		if (h > 0)
 		{
-			// cut in halves until a piece reaches no contact within its own length
+			// cut in halves until a piece reaches no contact within its own length; a rest of at most a substep is
+			// asked once (far from contact it is stepped, not owed)
 			while (piece > h && nearContact(piece))
 			{
 				piece /= 2;
 			}
-			const bool inContact = piece < h || (piece == remaining && nearContact(piece));
+			const bool inContact = piece < remaining ? piece <= h : (remaining <= h && nearContact(remaining));
 			if (inContact)
 			{
 				// in or near contact the world keeps a clock of its own, in steps of the contact substep: a rest of

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <string>
 
 #include "CharpyRun.h"
 
@@ -171,4 +173,37 @@ TEST(CharpyDirectSolve, SpeculativeContactsOfAManyPartSpecimenAgreeWithoutThemAt
 		EXPECT_NEAR(with.energy_loss_J, without.energy_loss_J, 0.07 * without.energy_loss_J) << parts << " parts";
 		EXPECT_NEAR(with.plastic_work_J, without.plastic_work_J, 0.07 * without.plastic_work_J) << parts << " parts";
 	}
+}
+
+// Frames shorter than the contact substep (20 us frames, 60 us substeps): in contact the world steps every third
+// frame and owes the rest, far from contact it steps every frame. The run is the one of 1 ms frames (the same steps
+// in contact), and its history moves forward: a row per frame that moved the world, from the first step on.
+TEST(CharpyDirectSolve, FramesShorterThanTheSubstepGiveTheSameLossAndAHistoryThatMovesForward)
+{
+	CharpyParameters p = geometry(false);
+	p.solver = plastic::SolverKind::DirectJoint;
+	p.speculative_contacts = true;
+	p.contact_substep_s = 6e-5;
+	p.dt_s = 1e-3;
+	const CharpyResult coarse = runCharpy(p);
+	p.dt_s = 2e-5;
+	std::ostringstream history;
+	const CharpyResult fine = runCharpy(p, &history);
+	EXPECT_NEAR(fine.energy_loss_J, coarse.energy_loss_J, 0.002 * coarse.energy_loss_J);
+	EXPECT_GT(fine.frames, fine.internal_steps) << "in contact, some 20 us frames step nothing";
+	std::istringstream lines(history.str());
+	std::string line;
+	std::getline(lines, line);  // the header
+	double previous = 0;
+	int rows = 0;
+	while (std::getline(lines, line))
+	{
+		const double t = std::stod(line.substr(0, line.find(',')));
+		EXPECT_GT(t, previous) << "row " << rows;
+		previous = t;
+		rows++;
+	}
+	EXPECT_GT(rows, 0);
+	EXPECT_LT(rows, fine.frames);
+	EXPECT_NEAR(previous, fine.end_time_s, 1e-12);
 }

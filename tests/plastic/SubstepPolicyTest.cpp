@@ -236,6 +236,23 @@ TEST(SubstepPolicy, WhenContactEndsMidFrameTheRestIsTakenInLongerSteps)
 	EXPECT_LT(n, 17) << "the whole frame in 1 ms steps would be 17";
 }
 
+TEST(SubstepPolicy, FarFromContactAFrameShorterThanASubstepIsSteppedNotOwed)
+{
+	// 20 us frames in 60 us substeps, never near contact: every frame is one step of its own length (a review found
+	// the world stepping only every third frame, as if in contact)
+	plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{6e-5});
+	int asked = 0;
+	for (int frame = 0; frame < 30; frame++)
+	{
+		std::vector<double> steps;
+		EXPECT_EQ(1, policy.advance(2e-5, [&](double) { asked++; return false; }, [&](double h) { steps.push_back(h); }));
+		ASSERT_EQ(1u, steps.size());
+		EXPECT_EQ(2e-5, steps[0]);
+		EXPECT_EQ(0.0, policy.owed_s());
+	}
+	EXPECT_EQ(30, asked) << "the contact test is asked once for a frame of less than a substep";
+}
+
 TEST(SubstepPolicy, FarFromContactAFrameIsOneStep)
 {
 	BallAndWall s(10.0, 1.0);
