@@ -104,7 +104,7 @@ TEST(CharpyDirectSolve, AtCoarseStepsTheLossIsNoMoreThanTheBookedWorkExplainsAnd
 // contact substep on a clock of its own (plastic::ContactSubstepPolicy), so the frame step does not change the steps:
 // measured (build/bin/charpy --solver=direct --speculative-contacts --contact-substep=S --dt=F, frames from 0.1 ms to
 // 1/60 s) +0.1 to +0.2 % at 10 us in 477-485 internal steps, +0.9 to +1.0 % at 30 us in 163-172, +1.9 to +2.0 % at
-// 60 us in 85-94, +4.3 to +4.5 % at 100 us in 55-65; the frame step moves the loss by at most 0.2 %. (Before, frames
+// 60 us in 86-94, +4.3 to +4.5 % at 100 us in 55-65; the frame step moves the loss by at most 0.2 %. (Before, frames
 // were cut into equal steps of at most the substep: a 0.1 ms frame in 60 us substeps was two of 50 us, 102 steps.)
 // Not every substep between is as good: at 70 and 90 us the halves are pinched between the nose's corners and the
 // anvils 0.5-0.8 mm deep, and the position correction throws them out (-8.7 and -13.0 %; REPORT.md's landscape).
