@@ -29,6 +29,7 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	r.impact_speed_m_s = scene.impactSpeed_m_s();
 	r.friction = parameters.friction;
 	r.warning = charpySelfLockWarning(parameters);
+	r.step_warning = scene.speculativeReachWarning();
 	r.striker_radius_m = parameters.striker_radius_m;
 	r.anvil_radius_m = parameters.anvil_radius_m;
 	r.anvil_taper_rad = parameters.anvil_taper_rad;
@@ -116,7 +117,8 @@ std::string toJson(const CharpyResult& r)
 	}
 	out << ",\"verdict\":\"" << charpyVerdictName(verdict) << "\",\"verdict_reason\":\"" << why << "\""
 		<< ",\"accuracy\":\"" << charpyAccuracyName(accuracy) << "\",\"accuracy_reason\":\"" << accuracyWhy << "\""
-		<< ",\"self_locking\":" << flag(!r.warning.empty()) << ",\"warning\":\"" << r.warning << "\"}";
+		<< ",\"self_locking\":" << flag(!r.warning.empty()) << ",\"warning\":\"" << r.warning << "\""
+		<< ",\"closes_past_reach\":" << flag(!r.step_warning.empty()) << ",\"step_warning\":\"" << r.step_warning << "\"}";
 	return out.str();
 }
 
@@ -137,6 +139,10 @@ std::string toSummary(const CharpyResult& r)
 	if (!r.warning.empty())
 	{
 		summary += "  SELF-LOCKING (predicted before the run): " + r.warning + "\n";
+	}
+	if (!r.step_warning.empty())
+	{
+		summary += "  STEP PAST THE CONTACTS' REACH (predicted before the run): " + r.step_warning + "\n";
 	}
 	return summary;
 }

@@ -34,6 +34,7 @@ struct CharpyResult
 	double impact_speed_m_s = 0;
 	double friction = 0;  // combined Coulomb coefficient of the specimen contacts
 	std::string warning;  // charpySelfLockWarning of the parameters: predicted before the run
+	std::string step_warning;  // CharpyScene::speculativeReachWarning: predicted before the run
 	double striker_radius_m = 0;  // 0 = the thesis' flat nose
 	double anvil_radius_m = 0;    // 0 = sharp anvil edges
 	double anvil_taper_rad = 0;   // taper of the gap behind rounded edges

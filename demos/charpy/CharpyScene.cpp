@@ -413,6 +413,34 @@ void CharpyScene::createHammer()
 
 int CharpyScene::solverFallbacks() const { return m_impl->solver.fallbacks(); }
 
+double CharpyScene::speculativeReach_m() const
+{
+	double reach = 1e300;
+	for (const btRigidBody* part : m_parts)
+	{
+		reach = std::min(reach, double(part->getCollisionShape()->getContactBreakingThreshold(gContactBreakingThreshold)));
+	}
+	return reach;
+}
+
+std::string CharpyScene::speculativeReachWarning() const
+{
+	const CharpyParameters& p = m_parameters;
+	const double step = p.contact_substep_s > 0 ? p.contact_substep_s : p.dt_s;
+	const double reach = speculativeReach_m();
+	const double closing = m_impactSpeed_m_s * step;
+	if (!p.speculative_contacts || !(closing > reach))
+	{
+		return "";
+	}
+	char text[320];
+	std::snprintf(text, sizeof text,
+				  "the hammer closes %.2f mm in a %.4g us internal step at %.2f m/s, more than the %.2f mm the speculative "
+				  "contacts reach: parts can sink in and be thrown out; use --contact-substep of at most %.3g",
+				  1e3 * closing, 1e6 * step, m_impactSpeed_m_s, 1e3 * reach, reach / m_impactSpeed_m_s);
+	return text;
+}
+
 bool CharpyScene::nearContact(double horizon_s) const
 {
 	return plastic::mayTouchWithin(m_contactMovers, m_contactOthers, horizon_s);

@@ -57,6 +57,14 @@ public:
 	CharpyEnergies energies() const;
 	double initialEnergy_j() const { return m_initialEnergy_j; }
 	double impactSpeed_m_s() const { return m_impactSpeed_m_s; }
+	// How far speculative contacts reach [m]: the smallest contact breaking threshold of the specimen's parts (Bullet
+	// gives a pair the smaller of its two shapes'; patch 0036 reports box pairs apart by less than it).
+	double speculativeReach_m() const;
+	// With speculative contacts, a warning when the hammer closes more than their reach in an internal step in
+	// contact (the contact substep, or the frame step without substeps) at its impact speed, naming the largest
+	// substep that does not; empty otherwise. Such steps let parts sink in past the reach, and the contacts'
+	// position correction can throw them out (report/REPORT.md's landscape of substeps).
+	std::string speculativeReachWarning() const;
 	double maxEnergyGain_j() const { return m_maxEnergyGain_j; }
 	double plasticWork_j() const;
 	double plasticRotation_rad() const;

@@ -42,6 +42,10 @@ int main(int argc, char** argv)
 	{
 		std::ostringstream history;
 		CharpyResult result = runCharpy(cl.parameters, cl.historyPath.empty() ? nullptr : &history);
+		if (!result.step_warning.empty())
+		{
+			std::cerr << "charpy: warning: " << result.step_warning << "\n";
+		}
 		if (!cl.historyPath.empty())
 		{
 			// written whole or not at all: to a temporary name, then renamed
