@@ -22,6 +22,17 @@ CharpyParameters geometry(bool standard)
 	return p;
 }
 
+// The coarse setting of issue 25: the direct solve, speculative contacts, 60 us contact substeps, 1 ms frames.
+CharpyParameters coarseSpeculative()
+{
+	CharpyParameters p = geometry(false);
+	p.solver = plastic::SolverKind::DirectJoint;
+	p.speculative_contacts = true;
+	p.contact_substep_s = 6e-5;
+	p.dt_s = 1e-3;
+	return p;
+}
+
 // One internal step per frame: no contact substeps.
 CharpyResult runWithoutSubsteps(bool standard, plastic::SolverKind solver, double step_s)
 {
@@ -181,11 +192,7 @@ TEST(CharpyDirectSolve, SpeculativeContactsOfAManyPartSpecimenAgreeWithoutThemAt
 // in contact), and its history moves forward: a row per frame that moved the world, from the first step on.
 TEST(CharpyDirectSolve, FramesShorterThanTheSubstepGiveTheSameLossAndAHistoryThatMovesForward)
 {
-	CharpyParameters p = geometry(false);
-	p.solver = plastic::SolverKind::DirectJoint;
-	p.speculative_contacts = true;
-	p.contact_substep_s = 6e-5;
-	p.dt_s = 1e-3;
+	CharpyParameters p = coarseSpeculative();
 	const CharpyResult coarse = runCharpy(p);
 	p.dt_s = 2e-5;
 	std::ostringstream history;
@@ -214,11 +221,7 @@ TEST(CharpyDirectSolve, FramesShorterThanTheSubstepGiveTheSameLossAndAHistoryTha
 // steps are where the cases off the sweep fail: 7 m/s at 60 us is +7.9 to +10.5 % (README).
 TEST(CharpyDirectSolve, ARunWhoseStepClosesPastTheSpeculativeReachSaysSoBeforeItRuns)
 {
-	CharpyParameters p = geometry(false);
-	p.solver = plastic::SolverKind::DirectJoint;
-	p.speculative_contacts = true;
-	p.contact_substep_s = 6e-5;
-	p.dt_s = 1e-3;
+	CharpyParameters p = coarseSpeculative();
 	EXPECT_EQ("", CharpyScene(p).speculativeReachWarning()) << "4.4 m/s closes 0.26 mm in 60 us";
 	p.impact_speed_m_s = 7.0;
 	const std::string warning = CharpyScene(p).speculativeReachWarning();
@@ -228,18 +231,14 @@ TEST(CharpyDirectSolve, ARunWhoseStepClosesPastTheSpeculativeReachSaysSoBeforeIt
 	p.contact_substep_s = 0.99 * scene.speculativeReach_m() / scene.impactSpeed_m_s();
 	EXPECT_EQ("", CharpyScene(p).speculativeReachWarning());
 	// smaller parts reach less (their breaking threshold follows their size): 32 parts warn at 60 us and 4.4 m/s
-	p = geometry(false);
-	p.speculative_contacts = true;
-	p.contact_substep_s = 6e-5;
+	p = coarseSpeculative();
 	p.parts = 32;
 	EXPECT_NE("", CharpyScene(p).speculativeReachWarning());
 	// no speculative contacts, no reach to warn about
 	p.speculative_contacts = false;
 	EXPECT_EQ("", CharpyScene(p).speculativeReachWarning());
 	// without substeps the step in contact is the frame
-	p = geometry(false);
-	p.speculative_contacts = true;
+	p = coarseSpeculative();
 	p.contact_substep_s = 0;
-	p.dt_s = 1e-3;
 	EXPECT_NE("", CharpyScene(p).speculativeReachWarning());
 }
