@@ -15,6 +15,7 @@
 
 #include "btBulletDynamicsCommon.h"
 #include "BulletCollision/CollisionDispatch/btSimulationIslandManager.h"
+#include "../common/SolverWorld.h"
 
 namespace
 {
@@ -42,15 +43,8 @@ struct BeamResult
 // load_ratio: of Mp / L (cantilever) or 8 Mp / L (clamped at both ends), held for duration_s
 BeamResult runBeam(const Beam& b, double load_ratio, double duration_s = 3.0)
 {
-	btDefaultCollisionConfiguration configuration;
-	btCollisionDispatcher dispatcher(&configuration);
-	btDbvtBroadphase broadphase;
-	std::unique_ptr<btConstraintSolver> solver;
-	if (b.direct)
-		solver = std::make_unique<btDirectJointSolver>();
-	else
-		solver = std::make_unique<btSequentialImpulseConstraintSolver>();
-	btDiscreteDynamicsWorld world(&dispatcher, &broadphase, solver.get(), &configuration);
+	SolverWorld setup(b.direct);
+	btDiscreteDynamicsWorld& world = setup.world;
 	world.setGravity(btVector3(0, 0, 0));
 	const double dt = 1.0 / 240.0;
 	const double seg = b.length_m / b.segments;
@@ -106,7 +100,7 @@ BeamResult runBeam(const Beam& b, double load_ratio, double duration_s = 3.0)
 		r.booked_j += double(j->getAbsorbedEnergy());
 		if (j->getCurrentPlasticRotation() > 1e-6) r.yielded++;
 	}
-	if (b.direct) r.fallbacks = static_cast<btDirectJointSolver*>(solver.get())->getNumFallbacks();
+	r.fallbacks = setup.fallbacks();
 	// the world is destroyed last but one: take the joints and bodies out before they go
 	for (const auto& j : joints) world.removeConstraint(j.get());
 	for (const auto& body : bodies) world.removeRigidBody(body.get());
@@ -281,15 +275,8 @@ namespace
 // how far the pair moved (m).
 double pushedPair_m(bool direct, double push_fraction, double step_s, int* fallbacks)
 {
-	btDefaultCollisionConfiguration configuration;
-	btCollisionDispatcher dispatcher(&configuration);
-	btDbvtBroadphase broadphase;
-	std::unique_ptr<btConstraintSolver> solver;
-	if (direct)
-		solver = std::make_unique<btDirectJointSolver>();
-	else
-		solver = std::make_unique<btSequentialImpulseConstraintSolver>();
-	btDiscreteDynamicsWorld world(&dispatcher, &broadphase, solver.get(), &configuration);
+	SolverWorld setup(direct);
+	btDiscreteDynamicsWorld& world = setup.world;
 	const double g = 10, mu = 0.5;
 	world.setGravity(btVector3(0, btScalar(-g), 0));
 	btBoxShape groundShape(btVector3(20, 1, 20));
@@ -320,7 +307,7 @@ double pushedPair_m(bool direct, double push_fraction, double step_s, int* fallb
 		world.stepSimulation(btScalar(step_s), 0, btScalar(step_s));
 	}
 	const double moved = double((boxes[0]->getCenterOfMassPosition() - start).length());
-	if (direct && fallbacks) *fallbacks = static_cast<btDirectJointSolver*>(solver.get())->getNumFallbacks();
+	if (fallbacks) *fallbacks = setup.fallbacks();
 	world.removeConstraint(&joint);
 	for (auto& box : boxes) world.removeRigidBody(box.get());
 	world.removeRigidBody(&ground);

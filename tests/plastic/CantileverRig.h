@@ -6,22 +6,14 @@
 
 #include "btBulletDynamicsCommon.h"
 #include "plastic/BeamBuilder.h"
+#include "../common/SolverWorld.h"
 
-struct CantileverRig
+struct CantileverRig : SolverWorld
 {
-	btDefaultCollisionConfiguration configuration;
-	btCollisionDispatcher dispatcher{&configuration};
-	btDbvtBroadphase broadphase;
-	std::unique_ptr<btConstraintSolver> solver;
-	std::unique_ptr<btDiscreteDynamicsWorld> worldPtr;
-	btDiscreteDynamicsWorld& world;
 	btBoxShape supportShape{btVector3(0.1, 0.1, 0.1)};
 	btRigidBody support{btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &supportShape)};
 
-	CantileverRig(int iterations, bool directSolver)
-		: solver(directSolver ? static_cast<btConstraintSolver*>(new btDirectJointSolver()) : new btSequentialImpulseConstraintSolver()),
-		  worldPtr(std::make_unique<btDiscreteDynamicsWorld>(&dispatcher, &broadphase, solver.get(), &configuration)),
-		  world(*worldPtr)
+	CantileverRig(int iterations, bool directSolver) : SolverWorld(directSolver)
 	{
 		world.setGravity(btVector3(0, 0, 0));
 		world.getSolverInfo().m_numIterations = iterations;
