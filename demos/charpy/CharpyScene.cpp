@@ -435,7 +435,7 @@ std::string CharpyScene::speculativeReachWarning() const
 	}
 	char text[320];
 	std::snprintf(text, sizeof text,
-				  "the hammer closes %.2f mm in a %.4g us internal step at %.2f m/s, more than the %.2f mm the speculative "
+				  "the hammer closes %.3f mm in a %.4g us internal step at %.2f m/s, more than the %.3f mm the speculative "
 				  "contacts reach: parts can sink in and be thrown out; use --contact-substep of at most %.3g",
 				  1e3 * closing, 1e6 * step, m_impactSpeed_m_s, 1e3 * reach, reach / m_impactSpeed_m_s);
 	return text;
