@@ -16,6 +16,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from sweep import csvfile  # noqa: E402
+from charpy_sweep import LANDSCAPE_DT_MS  # noqa: E402
 import peer_report  # noqa: E402  (the MuJoCo peer's series and section)
 
 import matplotlib  # noqa: E402
@@ -228,7 +229,7 @@ def report(rows, out_dir, command, source="the sweep CSV", peer=()):
 
 {table(chosen, direct_methods, steps, lambda r: f"{disc(r)} / {plastic_disc(r)} / {r.get('steps', '')}")}
 """)
-    landscape_dt = "1"
+    landscape_dt = f"{LANDSCAPE_DT_MS:g}"  # the frame step of the sweep's landscape runs, as its dt_ms column writes it
     landscape_rows = [r for r in spec if r["dt_ms"] == landscape_dt]
     landscape = ["| contact substep [ms] | " + " | ".join(direct_methods) + " |", "|---" * (len(direct_methods) + 1) + "|"]
     for sub in sorted({r["contact_substep_s"] for r in landscape_rows}, key=float):

@@ -224,10 +224,10 @@ TEST(CharpyDirectSolve, ARunWhoseStepClosesPastTheSpeculativeReachSaysSoBeforeIt
 	CharpyParameters p = coarseSpeculative();
 	EXPECT_EQ("", CharpyScene(p).speculativeReachWarning()) << "4.4 m/s closes 0.26 mm in 60 us";
 	p.impact_speed_m_s = 7.0;
-	const std::string warning = CharpyScene(p).speculativeReachWarning();
+	const CharpyScene scene(p);
+	const std::string warning = scene.speculativeReachWarning();
 	EXPECT_NE(std::string::npos, warning.find("--contact-substep of at most")) << warning;
 	// the advice holds: at the substep it names, no warning
-	const CharpyScene scene(p);
 	p.contact_substep_s = 0.99 * scene.speculativeReach_m() / scene.impactSpeed_m_s();
 	EXPECT_EQ("", CharpyScene(p).speculativeReachWarning());
 	// smaller parts reach less (their breaking threshold follows their size): 32 parts warn at 60 us and 4.4 m/s
