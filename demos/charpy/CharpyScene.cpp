@@ -48,6 +48,20 @@ plastic::JointMethod jointMethod(CharpyMethod method)
 	}
 	return plastic::JointMethod::PlasticHinge;
 }
+
+// GJK's tolerances scaled to the specimen, as its collision margins are (patch 0018), for this scene's steps and its
+// distance tests; a process-wide setting, so it is put back when the scope ends
+class SpecimenLengthScale
+{
+public:
+	explicit SpecimenLengthScale(double width_m) : m_saved(gVoronoiSimplexLengthScale) { gVoronoiSimplexLengthScale = btScalar(width_m); }
+	~SpecimenLengthScale() { gVoronoiSimplexLengthScale = m_saved; }
+	SpecimenLengthScale(const SpecimenLengthScale&) = delete;
+	SpecimenLengthScale& operator=(const SpecimenLengthScale&) = delete;
+
+private:
+	btScalar m_saved;
+};
 }  // namespace
 
 struct CharpyScene::Impl
@@ -443,6 +457,7 @@ std::string CharpyScene::speculativeReachWarning() const
 
 bool CharpyScene::nearContact(double horizon_s) const
 {
+	SpecimenLengthScale scale(m_parameters.specimen_width_m);
 	return plastic::mayTouchWithin(m_contactMovers, m_contactOthers, horizon_s);
 }
 
@@ -467,12 +482,10 @@ void CharpyScene::internalStep(double h_s)
 	{
 		plastic::updateJointForStep(*m_impl->joints[i].constraint, m_impl->specs[i], h_s);
 	}
-	// Scaled to the specimen for this scene's steps, as its collision margins are (patch 0018); a process-wide
-	// setting, so it is put back after every step.
-	const btScalar gjkLengthScale = gVoronoiSimplexLengthScale;
-	gVoronoiSimplexLengthScale = btScalar(m_parameters.specimen_width_m);
-	m_world->stepSimulation(h, 0);
-	gVoronoiSimplexLengthScale = gjkLengthScale;
+	{
+		SpecimenLengthScale scale(m_parameters.specimen_width_m);
+		m_world->stepSimulation(h, 0);
+	}
 	m_time_s += h_s;
 	m_internalSteps++;
 	trackAfterStep(h_s);
@@ -634,6 +647,7 @@ bool CharpyScene::passedAnvils() const
 
 bool CharpyScene::clear() const
 {
+	SpecimenLengthScale scale(m_parameters.specimen_width_m);
 	return passedAnvils() && !plastic::mayTouchWithin(m_contactMovers, m_contactAnvils, m_parameters.dt_s);
 }
 

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h"
+#include "BulletCollision/NarrowPhaseCollision/btPointCollector.h"
+#include "BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h"
 #include "btBulletDynamicsCommon.h"
 
 namespace plastic
@@ -20,9 +23,17 @@ bool overlap(const btVector3& aLo, const btVector3& aHi, const btVector3& bLo, c
 	return aLo.x() <= bHi.x() && bLo.x() <= aHi.x() && aLo.y() <= bHi.y() && bLo.y() <= aHi.y() && aLo.z() <= bHi.z() && bLo.z() <= aHi.z();
 }
 
-// The object's boxes, each grown by `grow`: one per child of a compound shape (a hammer's arm, head and striker;
-// the box of the whole compound would cover the air between them), else the shape's box.
-int boxes(const btCollisionObject* object, btScalar grow, btVector3* lo, btVector3* hi, int capacity)
+// The object's pieces: one per child of a compound shape (a hammer's arm, head and striker; the box of the whole
+// compound would cover the air between them), else the shape itself. Each has its box, grown by `grow`, and, when it
+// is convex, its shape and world transform for the distance test (else shape is null and its box stands for it).
+struct Piece
+{
+	btVector3 lo, hi;
+	const btConvexShape* shape;
+	btTransform transform;
+};
+
+int pieces(const btCollisionObject* object, btScalar grow, Piece* out, int capacity)
 {
 	const btCollisionShape* shape = object->getCollisionShape();
 	int count = 0;
@@ -33,23 +44,51 @@ int boxes(const btCollisionObject* object, btScalar grow, btVector3* lo, btVecto
 		{
 			for (int i = 0; i < compound->getNumChildShapes(); i++)
 			{
-				compound->getChildShape(i)->getAabb(object->getWorldTransform() * compound->getChildTransform(i), lo[count], hi[count]);
+				const btCollisionShape* child = compound->getChildShape(i);
+				out[count].transform = object->getWorldTransform() * compound->getChildTransform(i);
+				child->getAabb(out[count].transform, out[count].lo, out[count].hi);
+				out[count].shape = child->isConvex() ? static_cast<const btConvexShape*>(child) : nullptr;
 				count++;
 			}
 		}
 	}
 	if (count == 0)
 	{
-		shape->getAabb(object->getWorldTransform(), lo[0], hi[0]);
+		out[0].transform = object->getWorldTransform();
+		shape->getAabb(out[0].transform, out[0].lo, out[0].hi);
+		out[0].shape = shape->isConvex() ? static_cast<const btConvexShape*>(shape) : nullptr;
 		count = 1;
 	}
 	const btVector3 g(grow, grow, grow);
 	for (int i = 0; i < count; i++)
 	{
-		lo[i] -= g;
-		hi[i] += g;
+		out[i].lo -= g;
+		out[i].hi += g;
 	}
 	return count;
+}
+
+// whether two pieces are within `grow` of each other: their boxes overlap (the mover's grown by `grow`) and, when both
+// are convex, the distance between their shapes (GJK; 0 when they overlap) is at most `grow`
+bool within(const Piece& mover, const Piece& other, btScalar grow)
+{
+	if (!overlap(mover.lo, mover.hi, other.lo, other.hi))
+	{
+		return false;
+	}
+	if (!mover.shape || !other.shape)
+	{
+		return true;
+	}
+	btVoronoiSimplexSolver simplex;
+	btGjkPairDetector gjk(mover.shape, other.shape, &simplex, nullptr);
+	btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+	input.m_transformA = mover.transform;
+	input.m_transformB = other.transform;
+	btPointCollector closest;
+	gjk.getClosestPoints(input, closest, nullptr);
+	// without a penetration solver an overlap gives no result
+	return !closest.m_hasResult || closest.m_distance <= grow;
 }
 }  // namespace
 
@@ -90,11 +129,11 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 {
 	// no allocation: a scene asks this several times per frame
 	const int kCapacity = 16;  // children of a compound tested one by one; a larger compound is one box
-	btVector3 mLo[kCapacity], mHi[kCapacity], oLo[kCapacity], oHi[kCapacity];
-	// an other's boxes do not grow: they are taken once, each mover's are grown by its reach against that other
+	Piece mine[kCapacity], theirs[kCapacity];
+	// an other's pieces do not grow: they are taken once, each mover's are grown by its reach against that other
 	for (const btCollisionObject* other : others)
 	{
-		const int numOther = boxes(other, btScalar(0), oLo, oHi, kCapacity);
+		const int numOther = pieces(other, btScalar(0), theirs, kCapacity);
 		for (const btCollisionObject* mover : movers)
 		{
 			if (other == mover)
@@ -103,12 +142,12 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 			}
 			const btScalar grow = btScalar(relativeSpeedBound_m_s(mover, other) * horizon_s +
 										   0.5 * relativeGravity_m_s2(mover, other) * horizon_s * horizon_s + clearance_m);
-			const int numMover = boxes(mover, grow, mLo, mHi, kCapacity);
+			const int numMover = pieces(mover, grow, mine, kCapacity);
 			for (int i = 0; i < numMover; i++)
 			{
 				for (int j = 0; j < numOther; j++)
 				{
-					if (overlap(mLo[i], mHi[i], oLo[j], oHi[j]))
+					if (within(mine[i], theirs[j], grow))
 					{
 						return true;
 					}

@@ -10,14 +10,6 @@ class btCollisionObject;
 
 namespace plastic
 {
-// Whether some body of `movers` can touch some object of `others` within horizon_s. For each pair, the mover's
-// bounding box is grown by how far its points can move against the other's material in that time (their speed bound
-// times horizon_s, plus 1/2 their difference in gravity times horizon_s squared), plus clearance_m,
-// and tested against the other's box: in the other's moving frame the mover's centre of mass moves at
-// v_m - v_o - w_o x (c_m - c_o) and its points turn about it at w_m - w_o within its reach (the farthest corner of its
-// box from its centre of mass). Two bodies that move together (a specimen carried by the striker) do not close; a
-// body closing on a static one closes at its own speed. A compound shape's children have a box each (up to 16
-// children; a larger compound is one box), so the air between a hammer's arm and its striker is no contact.
 // A bound of the speed of any point of `mover` against the material of `other` at that point [m/s]: in `other`'s
 // moving frame, the mover's centre of mass moves at v_m - v_o - w_o x (c_m - c_o), and its points turn about it at
 // w_m - w_o within its reach (the farthest corner of its box from its centre of mass). Static objects do not move.
@@ -26,6 +18,13 @@ double relativeSpeedBound_m_s(const btCollisionObject* mover, const btCollisionO
 // a static one closes by 1/2 g h^2 more than its velocity says (1.4 mm in a 1/60 s frame).
 double relativeGravity_m_s2(const btCollisionObject* mover, const btCollisionObject* other);
 
+// Whether some body of `movers` can touch some object of `others` within horizon_s. For each pair, the mover's
+// reach against the other's material in that time (their speed bound times horizon_s, plus 1/2 their difference in
+// gravity times horizon_s squared), plus clearance_m, is compared with the distance between their shapes: their boxes
+// first, then, for boxes within reach, the shapes' own distance (GJK; the box of a turned box reaches well past its
+// faces). A compound shape's children are taken one by one (up to 16 children; a larger compound is one box), so
+// the air between a hammer's arm and its striker is no contact, and a non-convex shape stands as its box. GJK's
+// tolerances follow gVoronoiSimplexLengthScale (patch 0018): a scene of millimetre bodies sets it around the call.
 bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
 					double horizon_s, double clearance_m = 0.001);
 

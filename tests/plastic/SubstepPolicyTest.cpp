@@ -110,6 +110,32 @@ TEST(SubstepPolicy, ACompoundsChildrenHaveBoxesOfTheirOwn)
 	EXPECT_FALSE(plastic::mayTouchWithin({&ball}, {&hammer}, 1.0, 0.008));
 }
 
+TEST(SubstepPolicy, TheGapIsMeasuredBetweenTheShapesNotTheirBoxes)
+{
+	// a 0.2 m cube turned 45 degrees about z (its box reaches 0.141 m along x and y) and a 0.05 m ball at rest off its
+	// box's corner, at (0.17, 0.17): the boxes overlap, but the ball is 0.17 sqrt 2 - 0.1 - 0.05 = 90.4 mm from the
+	// cube's face
+	btBoxShape cubeShape(btVector3(btScalar(0.1), btScalar(0.1), btScalar(0.1)));
+	btCollisionObject cube;
+	cube.setCollisionShape(&cubeShape);
+	cube.setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
+	btTransform t;
+	t.setIdentity();
+	t.setRotation(btQuaternion(btVector3(0, 0, 1), btScalar(SIMD_PI / 4)));
+	cube.setWorldTransform(t);
+	btSphereShape ballShape(btScalar(0.05));
+	btRigidBody ball(btScalar(1), nullptr, &ballShape, btVector3(1, 1, 1));
+	t.setIdentity();
+	t.setOrigin(btVector3(btScalar(0.17), btScalar(0.17), 0));
+	ball.setWorldTransform(t);
+	EXPECT_FALSE(plastic::mayTouchWithin({&ball}, {&cube}, 1.0, 0.089));
+	EXPECT_TRUE(plastic::mayTouchWithin({&ball}, {&cube}, 1.0, 0.092));
+	// closing at 1 m/s along the diagonal, it arrives after 90.4 ms
+	ball.setLinearVelocity(btVector3(-1, -1, 0) / btSqrt(btScalar(2)));
+	EXPECT_FALSE(plastic::mayTouchWithin({&ball}, {&cube}, 0.089, 0.0));
+	EXPECT_TRUE(plastic::mayTouchWithin({&ball}, {&cube}, 0.092, 0.0));
+}
+
 TEST(SubstepPolicy, OnlyThePartOfAFrameNearContactIsSubstepped)
 {
 	// 1/60 s frame, contact after 10 ms: the first ~10 ms go in a few halves, the rest in 1 ms steps
