@@ -70,6 +70,25 @@ TEST(CharpyTargets, PlasticHingeWithinFivePercentWithAutomaticStepping)
 	EXPECT_TRUE(r.passed_anvils);
 }
 
+TEST(CharpyTargets, AutomaticSteppingEndsAtTheDuration)
+{
+	// the coarse frames --auto-dt takes far from contact are the scene's, not the user's: the last one ends at the
+	// duration (it used to run on to 61.6 ms of 60, 62.9 ms with 60 us substeps); a fixed frame step keeps whole frames
+	for (double duration : {0.06, 0.0123})
+	{
+		for (double substep : {1e-5, 6e-5})
+		{
+			CharpyParameters p;
+			p.auto_dt = true;
+			p.end_when_clear = false;
+			p.duration_s = duration;
+			p.contact_substep_s = substep;
+			const CharpyResult r = runCharpy(p);
+			EXPECT_NEAR(r.end_time_s, duration, 1e-9) << "duration " << duration << " s, substep " << substep << " s";
+		}
+	}
+}
+
 TEST(CharpyTargets, PlasticHingeLossIsMostlyPlasticWork)
 {
 	CharpyResult r = run(CharpyMethod::PlasticHinge, 1e-4);
