@@ -45,6 +45,12 @@ void configureElasticPlastic(Constraint& c, const JointSpec& spec, Stiffness set
 	{
 		setStiffness(c, i, stiff[i]);
 		c.setMaxForce(i, btScalar(maxForce[i]));
+		if (!(btScalar(maxForce[i]) < SIMD_INFINITY))
+		{
+			// not plastic: the constraint leaves the DOF to its base's limits, and the base's angular DOFs are free
+			// by default; an infinite capacity holds the DOF where it is made
+			c.setLimit(i, btScalar(0), btScalar(0));
+		}
 	}
 	c.setPlasticSettings(plasticSettings(spec));
 	c.resetPlasticState();

@@ -53,12 +53,12 @@ struct Lever
 		structure.world().removeRigidBody(bar.get());
 		structure.world().removeRigidBody(&support);
 	}
-	// turns under a moment about z for the given steps; returns the bar's rotation (rad) from its orientation
-	double turn(double moment_nm, int steps)
+	// turns under a moment about z (or `axis`) for the given steps; returns the bar's rotation (rad) from its orientation
+	double turn(double moment_nm, int steps, const btVector3& axis = btVector3(0, 0, 1))
 	{
 		for (int i = 0; i < steps; i++)
 		{
-			bar->applyTorque(btVector3(0, 0, btScalar(moment_nm)));
+			bar->applyTorque(axis * btScalar(moment_nm));
 			structure.stepOnce();
 		}
 		return bar->getOrientation().getAngle();
@@ -121,6 +121,28 @@ TEST(JointSpec, APlasticHingeGivenMpDirectlyYieldsAtIt)
 	const double expected = 0.5 * 50.0 / inertia * dt * dt * 60 * 61;
 	EXPECT_NEAR(turned, expected, 0.01 * expected);
 	EXPECT_NEAR(yields.joint.plasticWork_j(), 1000 * turned, 0.01 * 1000 * turned);
+}
+
+TEST(JointSpec, AnInfiniteCapacityHoldsItsDofForEveryPlasticMethod)
+{
+	// Mp 1000 N m about the main bending axis (world z), every other capacity SIMD_INFINITY: 5000 N m about the second
+	// bending axis (world y) or the member axis (world x) turns nothing and books nothing. The elastic-plastic
+	// constraints leave a DOF without a maximum force to their bases' limits, which are free for an angular DOF: the
+	// factory used to leave it there, and the bar spun about y and x (a Charpy specimen of 8 parts whose joints were
+	// given an infinite second-axis capacity gained 330 J)
+	for (JointMethod method : {JointMethod::PlasticHinge, JointMethod::ElasticPlastic, JointMethod::ElasticPlastic2})
+	{
+		JointSpec spec = fromSection(method);
+		spec.capacities = SectionCapacities{SIMD_INFINITY, SIMD_INFINITY, 1000.0, SIMD_INFINITY, SIMD_INFINITY};
+		ASSERT_TRUE(validate(spec).empty()) << validate(spec).front();
+		for (const btVector3& axis : {btVector3(0, 1, 0), btVector3(1, 0, 0)})
+		{
+			Lever lever(spec);
+			const double turned = lever.turn(5000, 60, axis);
+			EXPECT_LT(turned, 1e-3) << jointMethodName(method) << " about (" << axis.x() << ", " << axis.y() << ", " << axis.z() << ")";
+			EXPECT_LT(lever.joint.plasticWork_j(), 1e-6) << jointMethodName(method);
+		}
+	}
 }
 
 TEST(JointSpec, GivenNumbersOutOfRangeAreRefusedByName)
