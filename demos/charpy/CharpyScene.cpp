@@ -469,7 +469,7 @@ void CharpyScene::step()
 	{
 		// a coarse frame the scene chose itself ends at the duration, not past it (a frame of dt_s may, as every
 		// frame of a fixed frame step does)
-		frame = std::max(frame, std::min(p.auto_dt_coarse_s, p.duration_s - m_time_s));
+		frame = std::max(frame, std::min(p.auto_dt_coarse_s, p.duration_s - m_time_s - m_substeps.owed_s()));
 	}
 	m_substeps.advance(
 		frame, [this](double horizon_s) { return nearContact(horizon_s); }, [this](double h_s) { internalStep(h_s); });

@@ -87,8 +87,21 @@ bool within(const Piece& mover, const Piece& other, btScalar grow)
 	input.m_transformB = other.transform;
 	btPointCollector closest;
 	gjk.getClosestPoints(input, closest, nullptr);
-	// without a penetration solver an overlap gives no result
-	return !closest.m_hasResult || closest.m_distance <= grow;
+	// without a penetration solver an overlap gives no result (and so would a distance past the input's default
+	// m_maximumDistanceSquared, 1e18 m^2)
+	if (!closest.m_hasResult)
+	{
+		return true;
+	}
+	// GJK's answer is only as good as its tolerances: without gVoronoiSimplexLengthScale set to the shapes' size, or
+	// at one of its early exits, it can give a positive distance for overlapping shapes. The shapes' gap along the
+	// normal it found (their support points, margins included) is a lower bound of their distance that holds
+	// whatever GJK did; the smaller of the two is taken.
+	const btVector3 n = closest.m_normalOnBInWorld;  // from the other towards the mover
+	const btVector3 moverNearest = mover.transform(mover.shape->localGetSupportingVertex(-n * mover.transform.getBasis()));
+	const btVector3 otherNearest = other.transform(other.shape->localGetSupportingVertex(n * other.transform.getBasis()));
+	const btScalar alongNormal = n.dot(moverNearest) - n.dot(otherNearest);
+	return btMin(closest.m_distance, alongNormal) <= grow;
 }
 }  // namespace
 

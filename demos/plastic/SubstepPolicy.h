@@ -24,7 +24,10 @@ double relativeGravity_m_s2(const btCollisionObject* mover, const btCollisionObj
 // first, then, for boxes within reach, the shapes' own distance (GJK; the box of a turned box reaches well past its
 // faces). A compound shape's children are taken one by one (up to 16 children; a larger compound is one box), so
 // the air between a hammer's arm and its striker is no contact, and a non-convex shape stands as its box. GJK's
-// tolerances follow gVoronoiSimplexLengthScale (patch 0018): a scene of millimetre bodies sets it around the call.
+// tolerances follow gVoronoiSimplexLengthScale (patch 0018): a scene of millimetre bodies sets it around the call,
+// and the gap along the normal GJK found bounds its answer from below if it does not. The velocities are taken as
+// they are: what forces add within the horizon (joints, contacts, a hammer's turn about its pivot) is left to
+// clearance_m.
 bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
 					double horizon_s, double clearance_m = 0.001);
 

@@ -87,6 +87,14 @@ TEST(CharpyTargets, AutomaticSteppingEndsAtTheDuration)
 			EXPECT_NEAR(r.end_time_s, duration, 1e-9) << "duration " << duration << " s, substep " << substep << " s";
 		}
 	}
+	// less than a frame step left: the last frame is one frame step, as with fixed frames
+	CharpyParameters p;
+	p.auto_dt = true;
+	p.end_when_clear = false;
+	p.duration_s = 0.01234;
+	const CharpyResult r = runCharpy(p);
+	EXPECT_GE(r.end_time_s, p.duration_s - 1e-12);
+	EXPECT_LT(r.end_time_s, p.duration_s + p.dt_s);
 }
 
 TEST(CharpyTargets, PlasticHingeLossIsMostlyPlasticWork)
