@@ -70,7 +70,7 @@ class FrictionModelTest(unittest.TestCase):
         # issue 25: 0.06 ms contact substeps in 1 ms frames, btDirectJointSolver (its contacts have two friction rows,
         # patch 0037: with one, friction 0.25 lost 14-15 % too little) and speculative box-box contacts. Measured
         # (report/FRICTION.md): every one of the 10 runs with friction 0.05-0.25 within 3 % of the model (-1.9 to
-        # +2.5 %), in 227-316 internal steps with the sharp anvils and 138-166 with the ISO anvils (266-333 and
+        # +2.5 %), in 227-316 internal steps with the sharp anvils and 140-166 with the ISO anvils (266-333 and
         # 266-283 before the near-contact test measured the shapes' distance). Before the world stepped on its own
         # clock in contact (frames cut into equal steps), 8 of 10: the sharp anvils at 0.2 jammed the bent specimen in
         # the gap (+23.6 %).
