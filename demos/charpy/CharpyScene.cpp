@@ -9,6 +9,7 @@
 #include "plastic/JointFactory.h"
 #include "plastic/Section.h"
 #include "plastic/SolverSettings.h"
+#include "plastic/JoinedFaces.h"
 #include "plastic/SubstepPolicy.h"
 #include "btBulletDynamicsCommon.h"
 #include "BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h"
@@ -63,6 +64,20 @@ private:
 	btScalar m_saved;
 };
 }  // namespace
+
+// The scene's world: after the collision detection of a step, the contacts on the faces through which the specimen's
+// parts are joined are removed while their joints hold (plastic::JoinedFaces), before the solve
+class CharpyWorld : public btDiscreteDynamicsWorld
+{
+public:
+	using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
+	plastic::JoinedFaces joinedFaces;
+	void performDiscreteCollisionDetection() override
+	{
+		btDiscreteDynamicsWorld::performDiscreteCollisionDetection();
+		joinedFaces.removeContacts(*getDispatcher());
+	}
+};
 
 struct CharpyScene::Impl
 {
@@ -196,8 +211,8 @@ void CharpyScene::destroy()
 
 void CharpyScene::createWorld()
 {
-	m_world = std::make_unique<btDiscreteDynamicsWorld>(&m_impl->dispatcher, &m_impl->broadphase, m_impl->solver.get(),
-														&m_impl->collisionConfiguration);
+	m_world = std::make_unique<CharpyWorld>(&m_impl->dispatcher, &m_impl->broadphase, m_impl->solver.get(),
+											&m_impl->collisionConfiguration);
 	m_world->setGravity(btVector3(0, btScalar(-kGravity_m_s2), 0));
 	m_world->getSolverInfo().m_numIterations = m_parameters.solver_iterations;
 	m_world->getDispatchInfo().m_speculativeBoxBoxContacts = m_parameters.speculative_contacts;
@@ -333,6 +348,11 @@ void CharpyScene::createJoints()
 		{
 			m_middleJoint = joint;
 		}
+		// the parts are joined through their end faces (the specimen's axis is their Z): while the joint holds, a
+		// contact there is no contact with the specimen's surface
+		CharpyWorld& world = static_cast<CharpyWorld&>(*m_world);
+		world.joinedFaces.add(m_parts[i], plastic::kFacePlusZ, joint);
+		world.joinedFaces.add(m_parts[i + 1], plastic::kFaceMinusZ, joint);
 	}
 }
 

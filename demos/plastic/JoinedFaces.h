@@ -1,0 +1,54 @@
+// Contacts on the joined faces of a member cut into boxes: a Charpy specimen in parts, a beam of segments. Where two
+// boxes of a member are joined, the solid member has no surface; but Bullet's box contacts take the faces of each box
+// as they are, and a body that slides along the member can meet the end face of the next box at the seam (the boxes
+// are a hair's breadth out of line, or turned against each other) and catch on it: a striker's edge catching on a
+// seam pins a part on the anvil while it pushes the next, and the joint between them slips. JoinedFaces removes the
+// contacts that push on a joined face while its joint holds; the body meets the member through the faces beside the
+// seam, which are its surface.
+#pragma once
+
+#include <vector>
+
+#include "LinearMath/btVector3.h"
+
+class btCollisionObject;
+class btDispatcher;
+class btTypedConstraint;
+
+namespace plastic
+{
+// a box's faces, in its own frame: the +axis face and the -axis face of each axis
+enum BoxFace
+{
+	kFacePlusX = 1,
+	kFaceMinusX = 2,
+	kFacePlusY = 4,
+	kFaceMinusY = 8,
+	kFacePlusZ = 16,
+	kFaceMinusZ = 32
+};
+
+class JoinedFaces
+{
+public:
+	// `box` (a collision object whose shape is a btBoxShape) is joined through `face` (a BoxFace) by `joint`: while
+	// the joint is enabled (btTypedConstraint::isEnabled; a broken joint is not), the face is no surface
+	void add(const btCollisionObject* box, BoxFace face, const btTypedConstraint* joint);
+
+	// Removes the contacts of the dispatcher's manifolds whose normal on a box lies within 45 degrees of one of its
+	// joined faces' normals while that face's joint holds. Call it after the collision detection of a step and
+	// before its solve (a world's performDiscreteCollisionDetection). Returns the contacts it removed.
+	int removeContacts(btDispatcher& dispatcher) const;
+
+private:
+	struct Face
+	{
+		const btCollisionObject* box;
+		int axis;     // 0-2 in the box's frame
+		bool plus;    // the +axis face
+		const btTypedConstraint* joint;
+	};
+	std::vector<Face> m_faces;  // few: searched linearly
+	bool onJoinedFace(const btCollisionObject* box, const btVector3& outOfBox) const;
+};
+}  // namespace plastic

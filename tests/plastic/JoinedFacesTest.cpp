@@ -1,0 +1,92 @@
+// plastic::JoinedFaces against a seam with a step: two boxes of a member joined end to end, the second 0.2 mm higher,
+// and a cube whose edge sits at the seam, in the first's top face and against the second's end face. Bullet's
+// box-box contact pushes the cube back along the member through that end face; while the joint holds, that face is no
+// surface and the contact is removed, and once the joint is broken it is a surface again.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "plastic/JoinedFaces.h"
+#include "btBulletDynamicsCommon.h"
+
+namespace
+{
+struct Seam
+{
+	btDefaultCollisionConfiguration configuration;
+	btCollisionDispatcher dispatcher{&configuration};
+	btDbvtBroadphase broadphase;
+	btCollisionWorld world{&dispatcher, &broadphase, &configuration};
+	btBoxShape memberShape{btVector3(btScalar(0.05), btScalar(0.005), btScalar(0.005))};
+	btBoxShape cubeShape{btVector3(btScalar(0.005), btScalar(0.005), btScalar(0.005))};
+	std::unique_ptr<btRigidBody> first, second;
+	btCollisionObject cube;
+	std::unique_ptr<btPoint2PointConstraint> joint;
+
+	Seam()
+	{
+		// the member along x: the first box ends at x = 0, the second starts there, 0.2 mm higher
+		first = std::make_unique<btRigidBody>(btScalar(0), nullptr, &memberShape);
+		first->setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(btScalar(-0.05), 0, 0)));
+		second = std::make_unique<btRigidBody>(btScalar(0), nullptr, &memberShape);
+		second->setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(btScalar(0.05), btScalar(0.0002), 0)));
+		joint = std::make_unique<btPoint2PointConstraint>(*first, *second, btVector3(btScalar(0.05), 0, 0), btVector3(btScalar(-0.05), 0, 0));
+		// the cube on the first box's top face (in it by 0.01 mm), its leading face 0.05 mm into the second's end face
+		cube.setCollisionShape(&cubeShape);
+		cube.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(btScalar(-0.00495), btScalar(0.00999), 0)));
+		world.addCollisionObject(first.get());
+		world.addCollisionObject(second.get());
+		world.addCollisionObject(&cube);
+	}
+	// the contacts between the cube and the second box whose normal lies along the member (|n.x| > cos 45)
+	int endFaceContacts()
+	{
+		int count = 0;
+		for (int m = 0; m < dispatcher.getNumManifolds(); m++)
+		{
+			btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+			const bool cubeAndSecond = (manifold->getBody0() == &cube && manifold->getBody1() == second.get()) ||
+									   (manifold->getBody1() == &cube && manifold->getBody0() == second.get());
+			for (int i = 0; cubeAndSecond && i < manifold->getNumContacts(); i++)
+			{
+				if (btFabs(manifold->getContactPoint(i).m_normalWorldOnB.x()) > SIMDSQRT12) count++;
+			}
+		}
+		return count;
+	}
+};
+}  // namespace
+
+TEST(JoinedFaces, ContactsOnAJoinedFaceAreRemovedWhileItsJointHolds)
+{
+	Seam s;
+	s.world.performDiscreteCollisionDetection();
+	ASSERT_GT(s.endFaceContacts(), 0) << "the seam must catch the cube without JoinedFaces";
+
+	plastic::JoinedFaces joined;
+	joined.add(s.first.get(), plastic::kFacePlusX, s.joint.get());
+	joined.add(s.second.get(), plastic::kFaceMinusX, s.joint.get());
+	const int removed = joined.removeContacts(s.dispatcher);
+	EXPECT_GT(removed, 0);
+	EXPECT_EQ(s.endFaceContacts(), 0);
+
+	// the cube's contacts with the first box's top face are the member's surface: they stay
+	int onTop = 0;
+	for (int m = 0; m < s.dispatcher.getNumManifolds(); m++)
+	{
+		btPersistentManifold* manifold = s.dispatcher.getManifoldByIndexInternal(m);
+		for (int i = 0; i < manifold->getNumContacts(); i++)
+		{
+			if (btFabs(manifold->getContactPoint(i).m_normalWorldOnB.y()) > SIMDSQRT12) onTop++;
+		}
+	}
+	EXPECT_GT(onTop, 0);
+
+	// a broken joint leaves two bodies whose end faces are surfaces
+	s.joint->setEnabled(false);
+	s.world.performDiscreteCollisionDetection();
+	ASSERT_GT(s.endFaceContacts(), 0);
+	EXPECT_EQ(joined.removeContacts(s.dispatcher), 0);
+	EXPECT_GT(s.endFaceContacts(), 0);
+}
