@@ -351,8 +351,8 @@ void CharpyScene::createJoints()
 		// the parts are joined through their end faces (the specimen's axis is their Z): while the joint holds, a
 		// contact there is no contact with the specimen's surface
 		CharpyWorld& world = static_cast<CharpyWorld&>(*m_world);
-		world.joinedFaces.add(m_parts[i], plastic::kFacePlusZ, joint);
-		world.joinedFaces.add(m_parts[i + 1], plastic::kFaceMinusZ, joint);
+		world.joinedFaces.add(m_parts[i], plastic::kFacePlusZ, m_parts[i + 1], joint);
+		world.joinedFaces.add(m_parts[i + 1], plastic::kFaceMinusZ, m_parts[i], joint);
 	}
 }
 

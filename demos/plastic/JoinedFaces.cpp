@@ -4,19 +4,42 @@
 
 namespace plastic
 {
-void JoinedFaces::add(const btCollisionObject* box, BoxFace face, const btTypedConstraint* joint)
+bool JoinedFaces::add(const btCollisionObject* box, int face, const btCollisionObject* partner, const btTypedConstraint* joint)
 {
 	int bit = 0;
-	while ((1 << bit) != int(face))
+	while (bit < 6 && (1 << bit) != face)
 	{
 		bit++;
 	}
-	m_faces.push_back({box, bit / 2, bit % 2 == 0, joint});
+	if (bit == 6 || !box || !partner || !joint)
+	{
+		return false;
+	}
+	m_faces.push_back({box, bit / 2, bit % 2 == 0, partner, joint});
+	return true;
 }
 
-bool JoinedFaces::onJoinedFace(const btCollisionObject* box, const btVector3& outOfBox) const
+namespace
 {
-	bool inBox = false;
+// whether `point` (world) lies in the box of `object` grown by `extra` and `fraction` of its smallest half extent;
+// false for a shape that is not a box
+bool inBox(const btCollisionObject* object, const btVector3& point, btScalar extra, btScalar fraction)
+{
+	const btCollisionShape* shape = object->getCollisionShape();
+	if (shape->getShapeType() != BOX_SHAPE_PROXYTYPE)
+	{
+		return false;
+	}
+	const btVector3 half = static_cast<const btBoxShape*>(shape)->getHalfExtentsWithMargin();
+	const btScalar grow = extra + fraction * btMin(half.x(), btMin(half.y(), half.z()));
+	const btVector3 local = object->getWorldTransform().invXform(point).absolute();
+	return local.x() <= half.x() + grow && local.y() <= half.y() + grow && local.z() <= half.z() + grow;
+}
+}  // namespace
+
+bool JoinedFaces::onJoinedFace(const btCollisionObject* box, const btVector3& outOfBox, const btVector3& onBox, btScalar depth) const
+{
+	bool inFrame = false;
 	btVector3 local(0, 0, 0);
 	for (const Face& f : m_faces)
 	{
@@ -24,12 +47,12 @@ bool JoinedFaces::onJoinedFace(const btCollisionObject* box, const btVector3& ou
 		{
 			continue;
 		}
-		if (!inBox)
+		if (!inFrame)
 		{
 			local = outOfBox * box->getWorldTransform().getBasis();
-			inBox = true;
+			inFrame = true;
 		}
-		if ((f.plus ? local[f.axis] : -local[f.axis]) > SIMDSQRT12)
+		if ((f.plus ? local[f.axis] : -local[f.axis]) > SIMDSQRT12 && inBox(f.partner, onBox, depth, btScalar(0.04)))
 		{
 			return true;
 		}
@@ -52,8 +75,10 @@ int JoinedFaces::removeContacts(btDispatcher& dispatcher) const
 		for (int i = manifold->getNumContacts() - 1; i >= 0; i--)
 		{
 			// the normal on B points from B towards A: out of B, into A
-			const btVector3& n = manifold->getContactPoint(i).m_normalWorldOnB;
-			if (onJoinedFace(a, -n) || onJoinedFace(b, n))
+			const btManifoldPoint& cp = manifold->getContactPoint(i);
+			const btVector3& n = cp.m_normalWorldOnB;
+			const btScalar depth = btMax(-cp.getDistance(), btScalar(0));
+			if (onJoinedFace(a, -n, cp.getPositionWorldOnA(), depth) || onJoinedFace(b, n, cp.getPositionWorldOnB(), depth))
 			{
 				manifold->removeContactPoint(i);
 				removed++;

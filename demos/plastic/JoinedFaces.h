@@ -31,24 +31,33 @@ enum BoxFace
 class JoinedFaces
 {
 public:
-	// `box` (a collision object whose shape is a btBoxShape) is joined through `face` (a BoxFace) by `joint`: while
-	// the joint is enabled (btTypedConstraint::isEnabled; a broken joint is not), the face is no surface
-	void add(const btCollisionObject* box, BoxFace face, const btTypedConstraint* joint);
+	// `box` is joined to `partner` through its face `face` (one BoxFace) by `joint`: while the joint is enabled
+	// (btTypedConstraint::isEnabled; a broken joint is not), that face is no surface where the partner covers it. Both
+	// are collision objects whose shape is a btBoxShape; the joint must outlive this object or be given again.
+	// Returns false, and adds nothing, for a face that is not one BoxFace or a null object or joint.
+	bool add(const btCollisionObject* box, int face, const btCollisionObject* partner, const btTypedConstraint* joint);
 
 	// Removes the contacts of the dispatcher's manifolds whose normal on a box lies within 45 degrees of one of its
-	// joined faces' normals while that face's joint holds. Call it after the collision detection of a step and
-	// before its solve (a world's performDiscreteCollisionDetection). Returns the contacts it removed.
+	// joined faces' normals, while that face's joint holds, and whose point on the box lies in its partner's box (to
+	// within the contact's depth and 4 % of the partner's smallest half extent): a point on an end face that the
+	// partner does not cover (a seam out of line, or opened on the outside of a fold) is a surface and stays. Call it
+	// after the collision detection of a step and before its solve (a world's performDiscreteCollisionDetection).
+	// A pair that touches only through such points has no contact in that step: contact-ended callbacks fire.
+	// Returns the contacts it removed.
 	int removeContacts(btDispatcher& dispatcher) const;
 
 private:
 	struct Face
 	{
 		const btCollisionObject* box;
-		int axis;     // 0-2 in the box's frame
-		bool plus;    // the +axis face
+		int axis;  // 0-2 in the box's frame
+		bool plus; // the +axis face
+		const btCollisionObject* partner;
 		const btTypedConstraint* joint;
 	};
 	std::vector<Face> m_faces;  // few: searched linearly
-	bool onJoinedFace(const btCollisionObject* box, const btVector3& outOfBox) const;
+	// the joined face of `box` that a contact with normal `outOfBox` (out of the box) at `onBox` (its point on the box)
+	// pushes on, and which its partner covers there
+	bool onJoinedFace(const btCollisionObject* box, const btVector3& outOfBox, const btVector3& onBox, btScalar depth) const;
 };
 }  // namespace plastic

@@ -39,8 +39,9 @@ struct Seam
 		world.addCollisionObject(second.get());
 		world.addCollisionObject(&cube);
 	}
-	// the contacts between the cube and the second box whose normal lies along the member (|n.x| > cos 45)
-	int endFaceContacts()
+	// the contacts between the cube and the second box whose normal lies along the member (|n.x| > cos 45), at a
+	// height above aboveY
+	int endFaceContacts(btScalar aboveY = -BT_LARGE_FLOAT)
 	{
 		int count = 0;
 		for (int m = 0; m < dispatcher.getNumManifolds(); m++)
@@ -50,7 +51,8 @@ struct Seam
 									   (manifold->getBody1() == &cube && manifold->getBody0() == second.get());
 			for (int i = 0; cubeAndSecond && i < manifold->getNumContacts(); i++)
 			{
-				if (btFabs(manifold->getContactPoint(i).m_normalWorldOnB.x()) > SIMDSQRT12) count++;
+				const btManifoldPoint& cp = manifold->getContactPoint(i);
+				if (btFabs(cp.m_normalWorldOnB.x()) > SIMDSQRT12 && cp.getPositionWorldOnA().y() > aboveY) count++;
 			}
 		}
 		return count;
@@ -65,8 +67,8 @@ TEST(JoinedFaces, ContactsOnAJoinedFaceAreRemovedWhileItsJointHolds)
 	ASSERT_GT(s.endFaceContacts(), 0) << "the seam must catch the cube without JoinedFaces";
 
 	plastic::JoinedFaces joined;
-	joined.add(s.first.get(), plastic::kFacePlusX, s.joint.get());
-	joined.add(s.second.get(), plastic::kFaceMinusX, s.joint.get());
+	ASSERT_TRUE(joined.add(s.first.get(), plastic::kFacePlusX, s.second.get(), s.joint.get()));
+	ASSERT_TRUE(joined.add(s.second.get(), plastic::kFaceMinusX, s.first.get(), s.joint.get()));
 	const int removed = joined.removeContacts(s.dispatcher);
 	EXPECT_GT(removed, 0);
 	EXPECT_EQ(s.endFaceContacts(), 0);
@@ -89,4 +91,36 @@ TEST(JoinedFaces, ContactsOnAJoinedFaceAreRemovedWhileItsJointHolds)
 	ASSERT_GT(s.endFaceContacts(), 0);
 	EXPECT_EQ(joined.removeContacts(s.dispatcher), 0);
 	EXPECT_GT(s.endFaceContacts(), 0);
+}
+
+TEST(JoinedFaces, AnEndFaceThePartnerDoesNotCoverIsASurface)
+{
+	// the first box moved 2 mm down: the second's end face stands 2.2 mm above the first's top (at y = 3 mm), bare,
+	// and the cube against it is a real contact there; only where the first box covers the face (its top edge, to
+	// within the contact's depth and 0.2 mm) is a point removed
+	Seam s;
+	s.first->setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(btScalar(-0.05), btScalar(-0.002), 0)));
+	s.cube.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(btScalar(-0.00495), btScalar(0.00799), 0)));
+	s.world.performDiscreteCollisionDetection();
+	const btScalar bare = btScalar(0.0035);
+	const int onTheBareFace = s.endFaceContacts(bare);
+	ASSERT_GT(onTheBareFace, 0);
+	plastic::JoinedFaces joined;
+	joined.add(s.first.get(), plastic::kFacePlusX, s.second.get(), s.joint.get());
+	joined.add(s.second.get(), plastic::kFaceMinusX, s.first.get(), s.joint.get());
+	joined.removeContacts(s.dispatcher);
+	EXPECT_EQ(s.endFaceContacts(bare), onTheBareFace);
+}
+
+TEST(JoinedFaces, AFaceThatIsNotOneBoxFaceIsRefused)
+{
+	Seam s;
+	plastic::JoinedFaces joined;
+	EXPECT_FALSE(joined.add(s.first.get(), 0, s.second.get(), s.joint.get()));
+	EXPECT_FALSE(joined.add(s.first.get(), plastic::kFacePlusX | plastic::kFaceMinusX, s.second.get(), s.joint.get()));
+	EXPECT_FALSE(joined.add(s.first.get(), 64, s.second.get(), s.joint.get()));
+	EXPECT_FALSE(joined.add(s.first.get(), plastic::kFacePlusX, nullptr, s.joint.get()));
+	EXPECT_FALSE(joined.add(s.first.get(), plastic::kFacePlusX, s.second.get(), nullptr));
+	s.world.performDiscreteCollisionDetection();
+	EXPECT_EQ(joined.removeContacts(s.dispatcher), 0);
 }
