@@ -39,6 +39,13 @@ struct Seam
 		world.addCollisionObject(second.get());
 		world.addCollisionObject(&cube);
 	}
+	~Seam()
+	{
+		// out of the world before the objects go (the members are destroyed after this body, the world last)
+		world.removeCollisionObject(&cube);
+		world.removeCollisionObject(second.get());
+		world.removeCollisionObject(first.get());
+	}
 	// the contacts between the cube and the second box whose normal lies along the member (|n.x| > cos 45), at a
 	// height above aboveY
 	int endFaceContacts(btScalar aboveY = -BT_LARGE_FLOAT)
