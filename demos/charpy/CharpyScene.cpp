@@ -66,7 +66,8 @@ private:
 }  // namespace
 
 // The scene's world: after the collision detection of a step, the contacts on the faces through which the specimen's
-// parts are joined are removed while their joints hold (plastic::JoinedFaces), before the solve
+// parts are joined are removed where the neighbouring part covers them, while their joints hold (plastic::JoinedFaces),
+// before the solve
 class CharpyWorld : public btDiscreteDynamicsWorld
 {
 public:

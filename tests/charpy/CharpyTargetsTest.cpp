@@ -74,24 +74,24 @@ TEST(CharpyTargets, AutomaticSteppingEndsAtTheDuration)
 {
 	// the coarse frames --auto-dt takes far from contact are the scene's, not the user's: the last one ends at the
 	// duration (it used to run on to 61.6 ms of 60, 62.9 ms with 60 us substeps); a fixed frame step keeps whole frames
+	const auto autoToTheEnd = [](double duration, double substep) {
+		CharpyParameters p;
+		p.auto_dt = true;
+		p.end_when_clear = false;
+		p.duration_s = duration;
+		p.contact_substep_s = substep;
+		return p;
+	};
 	for (double duration : {0.06, 0.0123})
 	{
 		for (double substep : {1e-5, 6e-5})
 		{
-			CharpyParameters p;
-			p.auto_dt = true;
-			p.end_when_clear = false;
-			p.duration_s = duration;
-			p.contact_substep_s = substep;
-			const CharpyResult r = runCharpy(p);
+			const CharpyResult r = runCharpy(autoToTheEnd(duration, substep));
 			EXPECT_NEAR(r.end_time_s, duration, 1e-9) << "duration " << duration << " s, substep " << substep << " s";
 		}
 	}
 	// less than a frame step left: the last frame is one frame step, as with fixed frames
-	CharpyParameters p;
-	p.auto_dt = true;
-	p.end_when_clear = false;
-	p.duration_s = 0.01234;
+	const CharpyParameters p = autoToTheEnd(0.01234, CharpyParameters{}.contact_substep_s);
 	const CharpyResult r = runCharpy(p);
 	EXPECT_GE(r.end_time_s, p.duration_s - 1e-12);
 	EXPECT_LT(r.end_time_s, p.duration_s + p.dt_s);
