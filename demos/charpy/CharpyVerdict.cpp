@@ -13,6 +13,7 @@ const double kTunnellingLossFraction = 0.05;
 const double kHammerThroughAngle_rad = 0.05;  // about 30 mm of striker travel past the specimen's front face
 const double kCameApartBendFraction = 0.5;    // of theta_pass, end to end
 const double kCameApartWorkFraction = 0.5;    // of the energy lost
+const double kUnbookedBendFraction = 0.25;    // of theta_pass: end-to-end bend beyond the joints' plastic rotation
 const double kPenetrationWidthFraction = 0.1; // of the specimen's width
 
 std::string format(const char* pattern, double a, double b)
@@ -81,6 +82,15 @@ CharpyVerdict classifyCharpyRun(const CharpyResult& r, std::string* why)
 		reason = format("the unbroken specimen passed the anvils bent %.3g rad end to end (theta_pass %.3g rad)",
 						r.end_bend_angle_rad, r.theta_pass_rad) +
 				 format(" with %.3g J of plastic work for %.4g J lost", r.plastic_work_J, r.energy_loss_J);
+	}
+	else if (r.joints_book_work && r.passed_anvils && !r.broken &&
+			 r.end_bend_angle_rad - r.plastic_rotation_rad > kUnbookedBendFraction * r.theta_pass_rad)
+	{
+		// the joints' elastic turn at their caps is a few hundredths of a radian end to end
+		verdict = CharpyVerdict::CameApart;
+		reason = format("the unbroken specimen passed the anvils bent %.3g rad end to end, but its joints booked %.3g rad of plastic rotation",
+						r.end_bend_angle_rad, r.plastic_rotation_rad) +
+				 format(" (%.3g J of plastic work for %.4g J lost)", r.plastic_work_J, r.energy_loss_J);
 	}
 	else if (r.tunnelled)
 	{

@@ -18,7 +18,9 @@ enum class CharpyVerdict
 	CameApart,   // a specimen whose joints book their work (methods 6-8) got past the anvils unbroken, its end
 	             // parts turned less than half of theta_pass relative to each other, and its joints booked less
 	             // than half of the energy lost as plastic work: neither bent nor sheared plastically, so its
-	             // joints let go in the solver (an unconverged chain, e.g. many light parts under the hammer)
+	             // joints let go in the solver (an unconverged chain, e.g. many light parts under the hammer);
+	             // or its end parts turned more than a quarter of theta_pass beyond the plastic rotation its
+	             // joints booked (in all their angular DOFs): a bend no joint yielded for
 	Stable,
 };
 

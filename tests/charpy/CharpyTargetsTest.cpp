@@ -152,6 +152,26 @@ TEST(CharpyTargets, TunnellingIsToldFromTheBendNotFromTheMethod)
 	EXPECT_FALSE(plastic.tunnelled);
 }
 
+TEST(CharpyTargets, ABendNoJointYieldedForIsAChainThatCameApart)
+{
+	// 32 light parts under sequential impulse with 1 mm of room each side of the folded specimen: the chain leaves
+	// through the gap bent 1.2 rad end to end while its joints book no plastic rotation (they let go in the solver)
+	CharpyParameters p;
+	p.method = CharpyMethod::ElasticPlastic2;
+	p.parts = 32;
+	p.anvil_gap_m = 0.042;
+	const CharpyResult r = runCharpy(p);
+	ASSERT_TRUE(r.passed_anvils && !r.broken);
+	EXPECT_GT(r.end_bend_angle_rad - r.plastic_rotation_rad, 0.25 * r.theta_pass_rad);
+	std::string why;
+	EXPECT_EQ(charpyVerdictName(classifyCharpyRun(r, &why)), "came-apart") << why;
+	// the halves bend as much as their joint yields: stable
+	p.parts = 2;
+	const CharpyResult halves = runCharpy(p);
+	EXPECT_EQ(charpyVerdictName(classifyCharpyRun(halves, &why)), "stable") << why;
+	EXPECT_NEAR(halves.end_bend_angle_rad, halves.plastic_rotation_rad, 0.1) << why;
+}
+
 TEST(CharpyTargets, BrittleJointBreaksBeforeItBends)
 {
 	CharpyResult r = run(CharpyMethod::BrittleZeroLimits, 1e-4);
