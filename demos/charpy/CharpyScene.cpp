@@ -476,6 +476,16 @@ std::string CharpyScene::speculativeReachWarning() const
 	return text;
 }
 
+double CharpyScene::fastestSpin_rad_s() const
+{
+	double fastest = 0;
+	for (const btRigidBody* part : m_parts)
+	{
+		fastest = std::max(fastest, double(part->getAngularVelocity().length()));
+	}
+	return fastest;
+}
+
 bool CharpyScene::nearContact(double horizon_s) const
 {
 	SpecimenLengthScale scale(m_parameters.specimen_width_m);
@@ -493,7 +503,8 @@ void CharpyScene::step()
 		frame = std::max(frame, std::min(p.auto_dt_coarse_s, p.duration_s - m_time_s - m_substeps.owed_s()));
 	}
 	m_substeps.advance(
-		frame, [this](double horizon_s) { return nearContact(horizon_s); }, [this](double h_s) { internalStep(h_s); });
+		frame, [this](double horizon_s) { return nearContact(horizon_s); }, [this](double h_s) { internalStep(h_s); },
+		[this] { return fastestSpin_rad_s(); });
 	m_lastFrameStep_s = frame;
 }
 

@@ -100,6 +100,7 @@ private:
 	void createJoints();
 	void createHammer();
 	bool nearContact(double horizon_s) const;
+	double fastestSpin_rad_s() const;  // of the specimen's parts
 	void internalStep(double h_s);
 	void trackAfterStep(double h_s);
 

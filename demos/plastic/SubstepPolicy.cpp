@@ -68,10 +68,26 @@ int pieces(const btCollisionObject* object, btScalar grow, Piece* out, int capac
 	return count;
 }
 
-// whether two pieces are within `grow` of each other: their boxes overlap (the mover's grown by `grow`) and, when both
-// are convex, the distance between their shapes (GJK; 0 when they overlap) is at most `grow`
-bool within(const Piece& mover, const Piece& other, btScalar grow)
+// How far the mover can go against the other within the horizon: `grow` bounds it in every direction (its speed bound
+// times the horizon, plus gravity's and the clearance); along a normal n from the other towards the mover it is at
+// most `fixed` (the spin's part, gravity's and the clearance) plus the horizon times the mover's closing speed along
+// n, -velocity . n, where velocity is its centre's in the other's moving frame.
+struct Reach
 {
+	btScalar grow;
+	btScalar fixed;
+	btVector3 velocity;
+	btScalar horizon;
+};
+
+// whether two pieces can touch within the horizon: their boxes overlap (the mover's grown by reach.grow) and, when both
+// are convex, the distance between their shapes (GJK; 0 when they overlap) is at most what the mover can close along
+// the normal between them. Translated at a constant velocity, the distance between two convex shapes is a convex
+// function of time, so it stays above its tangent, the distance less the closing speed along the normal times the
+// time; the spin moves no point more than its part of the reach. A body sliding past another closes nothing.
+bool within(const Piece& mover, const Piece& other, const Reach& reach)
+{
+	const btScalar grow = reach.grow;
 	if (!overlap(mover.lo, mover.hi, other.lo, other.hi))
 	{
 		return false;
@@ -101,7 +117,8 @@ bool within(const Piece& mover, const Piece& other, btScalar grow)
 	const btVector3 moverNearest = mover.transform(mover.shape->localGetSupportingVertex(-n * mover.transform.getBasis()));
 	const btVector3 otherNearest = other.transform(other.shape->localGetSupportingVertex(n * other.transform.getBasis()));
 	const btScalar alongNormal = n.dot(moverNearest) - n.dot(otherNearest);
-	return btMin(closest.m_distance, alongNormal) <= grow;
+	const btScalar closes = reach.fixed + btMax(btScalar(0), -reach.velocity.dot(n)) * reach.horizon;
+	return btMin(closest.m_distance, alongNormal) <= btMin(grow, closes);
 }
 }  // namespace
 
@@ -114,7 +131,10 @@ double relativeGravity_m_s2(const btCollisionObject* mover, const btCollisionObj
 	return double((gm - go).length());
 }
 
-double relativeSpeedBound_m_s(const btCollisionObject* mover, const btCollisionObject* other)
+namespace
+{
+// the mover's centre's velocity in the other's moving frame and the bound of its spin's speed at its points
+void relativeMotion(const btCollisionObject* mover, const btCollisionObject* other, btVector3& velocity, double& spinSpeed_m_s)
 {
 	const btRigidBody* m = movingBody(mover);
 	const btRigidBody* o = movingBody(other);
@@ -123,7 +143,8 @@ double relativeSpeedBound_m_s(const btCollisionObject* mover, const btCollisionO
 	const btVector3 centre = m ? m->getCenterOfMassPosition() : mover->getWorldTransform().getOrigin();
 	const btVector3 up = (hi - centre).absolute(), down = (centre - lo).absolute();
 	const double reach = double(btVector3(btMax(up.x(), down.x()), btMax(up.y(), down.y()), btMax(up.z(), down.z())).length());
-	btVector3 velocity(0, 0, 0), spin(0, 0, 0);
+	btVector3 spin(0, 0, 0);
+	velocity.setValue(0, 0, 0);
 	if (m)
 	{
 		velocity = m->getLinearVelocity();
@@ -134,7 +155,16 @@ double relativeSpeedBound_m_s(const btCollisionObject* mover, const btCollisionO
 		velocity -= o->getLinearVelocity() + o->getAngularVelocity().cross(centre - o->getCenterOfMassPosition());
 		spin -= o->getAngularVelocity();
 	}
-	return double(velocity.length()) + double(spin.length()) * reach;
+	spinSpeed_m_s = double(spin.length()) * reach;
+}
+}  // namespace
+
+double relativeSpeedBound_m_s(const btCollisionObject* mover, const btCollisionObject* other)
+{
+	btVector3 velocity;
+	double spinSpeed_m_s;
+	relativeMotion(mover, other, velocity, spinSpeed_m_s);
+	return double(velocity.length()) + spinSpeed_m_s;
 }
 
 bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
@@ -153,14 +183,19 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 			{
 				continue;
 			}
-			const btScalar grow = btScalar(relativeSpeedBound_m_s(mover, other) * horizon_s +
-										   0.5 * relativeGravity_m_s2(mover, other) * horizon_s * horizon_s + clearance_m);
-			const int numMover = pieces(mover, grow, mine, kCapacity);
+			Reach reach;
+			double spinSpeed_m_s;
+			relativeMotion(mover, other, reach.velocity, spinSpeed_m_s);
+			const double fixed_m = spinSpeed_m_s * horizon_s + 0.5 * relativeGravity_m_s2(mover, other) * horizon_s * horizon_s + clearance_m;
+			reach.grow = btScalar(double(reach.velocity.length()) * horizon_s + fixed_m);
+			reach.fixed = btScalar(fixed_m);
+			reach.horizon = btScalar(horizon_s);
+			const int numMover = pieces(mover, reach.grow, mine, kCapacity);
 			for (int i = 0; i < numMover; i++)
 			{
 				for (int j = 0; j < numOther; j++)
 				{
-					if (within(mine[i], theirs[j], grow))
+					if (within(mine[i], theirs[j], reach))
 					{
 						return true;
 					}
@@ -181,12 +216,19 @@ std::vector<std::string> validate(const ContactSubstepSettings& settings)
 		out << "contact-substep: " << h << " is not in [1e-07, 0.05] s (or 0 = off)";
 		errors.push_back(out.str());
 	}
+	const double turn = settings.max_turn_per_step_rad;
+	if (!(std::isfinite(turn) && turn >= 0 && turn <= SIMD_PI))
+	{
+		std::ostringstream out;
+		out << "max-turn-per-step: " << turn << " is not in [0, pi] rad (0 = no bound)";
+		errors.push_back(out.str());
+	}
 	return errors;
 }
 
 ContactSubstepPolicy::ContactSubstepPolicy(const ContactSubstepSettings& settings) : m_settings(settings), m_errors(validate(settings)) {}
 
-int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact, const Step& step)
+int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin)
 {
 	if (!(std::isfinite(frame_s) && frame_s > 0) || !m_errors.empty())
 	{
@@ -227,6 +269,16 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 				{
 					m_owed_s = remaining;
 					break;
+				}
+			}
+			else if (spin && m_settings.max_turn_per_step_rad > 0)
+			{
+				// out of contact a long step is still an integration step: a fast spin turned too far in one loses
+				// energy in the joints and the gyroscopic term
+				const double w = spin();
+				if (w * piece > m_settings.max_turn_per_step_rad)
+				{
+					piece = std::max(h, m_settings.max_turn_per_step_rad / w);
 				}
 			}
 		}

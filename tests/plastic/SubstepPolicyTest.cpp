@@ -136,6 +136,26 @@ TEST(SubstepPolicy, TheGapIsMeasuredBetweenTheShapesNotTheirBoxes)
 	EXPECT_TRUE(plastic::mayTouchWithin({&ball}, {&cube}, 0.092, 0.0));
 }
 
+TEST(SubstepPolicy, ABodySlidingPastAnotherClosesOnlyAlongTheNormal)
+{
+	// a ball 10 mm from a wall's face, sliding along it at 10 m/s: its speed reaches 10 mm in 1 ms, but it never closes
+	BallAndWall s(0.01, 0.0);
+	s.ball->setLinearVelocity(btVector3(0, 10, 0));
+	EXPECT_NEAR(plastic::relativeSpeedBound_m_s(s.ball.get(), s.wall.get()), 10.0, 1e-5);
+	EXPECT_FALSE(s.near(1.0));
+	// turned 1 degree towards the wall it closes at 10 sin 1 deg = 0.1745 m/s: it arrives after 57.3 ms
+	const btScalar a = btScalar(SIMD_PI / 180);
+	s.ball->setLinearVelocity(btVector3(10 * btSin(a), 10 * btCos(a), 0));
+	EXPECT_FALSE(s.near(0.056));
+	EXPECT_TRUE(s.near(0.059));
+	// sliding straight and spinning at 10 rad/s: its points (0.1 sqrt 3 from its centre at its box's corner) close at
+	// up to 1.732 m/s, 10 mm in 5.77 ms
+	s.ball->setLinearVelocity(btVector3(0, 10, 0));
+	s.ball->setAngularVelocity(btVector3(0, 0, 10));
+	EXPECT_FALSE(s.near(0.0056));
+	EXPECT_TRUE(s.near(0.0059));
+}
+
 TEST(SubstepPolicy, OnlyThePartOfAFrameNearContactIsSubstepped)
 {
 	// 1/60 s frame, contact after 10 ms: the first ~10 ms go in a few halves, the rest in 1 ms steps
@@ -286,6 +306,27 @@ TEST(SubstepPolicy, FarFromContactAFrameIsOneStep)
 	EXPECT_EQ(policy.advance(1.0 / 60.0, [&](double h) { return s.near(h); }, [](double) {}), 1);
 }
 
+TEST(SubstepPolicy, FarFromContactNoStepTurnsABodyMoreThanTheBound)
+{
+	// spinning at 100 rad/s, a 10 ms frame far from contact is cut into steps of 0.25 rad / 100 rad/s = 2.5 ms
+	BallAndWall s(10.0, 1.0);
+	plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{1e-5, 0.25});
+	std::vector<double> steps;
+	const auto record = [&steps](double h) { steps.push_back(h); };
+	const auto near = [&](double h) { return s.near(h); };
+	EXPECT_EQ(policy.advance(0.01, near, record, [] { return 100.0; }), 4);
+	for (double h : steps)
+	{
+		EXPECT_NEAR(h, 2.5e-3, 1e-12);
+	}
+	// no spin given, or no bound: one step
+	EXPECT_EQ(policy.advance(0.01, near, record), 1);
+	plastic::ContactSubstepPolicy unbounded(plastic::ContactSubstepSettings{1e-5, 0});
+	EXPECT_EQ(unbounded.advance(0.01, near, record, [] { return 100.0; }), 1);
+	// so fast that the bound asks for less than a substep: steps of one substep
+	EXPECT_EQ(policy.advance(1e-4, near, record, [] { return 1e5; }), 10);
+}
+
 TEST(SubstepPolicy, BadSettingsAreRefusedByName)
 {
 	int steps = 0;
@@ -299,6 +340,9 @@ TEST(SubstepPolicy, BadSettingsAreRefusedByName)
 	ASSERT_EQ(1u, tooLong.errors().size());
 	EXPECT_NE(tooLong.errors().front().find("contact-substep: 1 is not in"), std::string::npos) << tooLong.errors().front();
 	EXPECT_EQ(-1, tooLong.advance(1.0 / 60.0, far, step));  // refused settings step nothing
+	const plastic::ContactSubstepPolicy badTurn(plastic::ContactSubstepSettings{1e-5, -0.1});
+	ASSERT_EQ(1u, badTurn.errors().size());
+	EXPECT_NE(badTurn.errors().front().find("max-turn-per-step: -0.1 is not in [0, pi] rad"), std::string::npos) << badTurn.errors().front();
 	plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{0});
 	EXPECT_TRUE(policy.errors().empty());
 	EXPECT_EQ(-1, policy.advance(0, far, step));
