@@ -21,6 +21,12 @@ bool JoinedFaces::add(const btCollisionObject* box, int face, const btCollisionO
 
 namespace
 {
+// cos 60 degrees: a contact whose normal out of the box leans more than 30 degrees from the box's side faces towards a
+// joined face pushes on the seam, not on the member's surface. Bullet's box-box contact at a seam's corner takes the
+// other box's face normal, which can lie anywhere between the side face's and the end face's: a flat nose's corner
+// caught on a part whose corner stood 8 um out of line, with a normal 49.5 degrees from the part's end face
+const btScalar kJoinedFaceCos = btScalar(0.5);
+
 // whether `point` (world) lies in the box of `object` grown by `extra` and `fraction` of its smallest half extent;
 // false for a shape that is not a box
 bool inBox(const btCollisionObject* object, const btVector3& point, btScalar extra, btScalar fraction)
@@ -52,7 +58,7 @@ bool JoinedFaces::onJoinedFace(const btCollisionObject* box, const btVector3& ou
 			local = outOfBox * box->getWorldTransform().getBasis();
 			inFrame = true;
 		}
-		if ((f.plus ? local[f.axis] : -local[f.axis]) > SIMDSQRT12 && inBox(f.partner, onBox, depth, btScalar(0.04)))
+		if ((f.plus ? local[f.axis] : -local[f.axis]) > kJoinedFaceCos && inBox(f.partner, onBox, depth, btScalar(0.04)))
 		{
 			return true;
 		}

@@ -37,8 +37,8 @@ public:
 	// Returns false, and adds nothing, for a face that is not one BoxFace or a null object or joint.
 	bool add(const btCollisionObject* box, int face, const btCollisionObject* partner, const btTypedConstraint* joint);
 
-	// Removes the contacts of the dispatcher's manifolds whose normal on a box lies within 45 degrees of one of its
-	// joined faces' normals, while that face's joint holds, and whose point on the box lies in its partner's box (to
+	// Removes the contacts of the dispatcher's manifolds whose normal on a box lies within 60 degrees of one of its
+	// joined faces' normals (more than 30 degrees from its side faces, towards the joined face), while that face's joint holds, and whose point on the box lies in its partner's box (to
 	// within the contact's depth and 4 % of the partner's smallest half extent): a point on an end face that the
 	// partner does not cover (a seam out of line, or opened on the outside of a fold) is a surface and stays. Call it
 	// after the collision detection of a step and before its solve (a world's performDiscreteCollisionDetection).

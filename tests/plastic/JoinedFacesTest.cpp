@@ -111,6 +111,37 @@ TEST(JoinedFaces, AnEndFaceThePartnerDoesNotCoverIsASurface)
 	EXPECT_EQ(s.endFaceContacts(bare), onTheBareFace);
 }
 
+TEST(JoinedFaces, AContactAtTheSeamsCornerIsRemovedUnlessItPushesOnTheSideFace)
+{
+	// hand-made contacts of the cube at the second box's top corner on the seam (x = 0, y = 5.2 mm: 0.2 mm above the
+	// first box's top, which covers it within its 4 % of 5 mm), with normals out of the second box turned from its end
+	// face's (-x) towards its top face's (+y): at 50 degrees (a box-box contact's normal at a corner can be the other
+	// box's face normal) it pushes on the seam and goes; at 70 degrees it pushes on the top face, the surface, and stays
+	Seam s;
+	plastic::JoinedFaces joined;
+	joined.add(s.first.get(), plastic::kFacePlusX, s.second.get(), s.joint.get());
+	joined.add(s.second.get(), plastic::kFaceMinusX, s.first.get(), s.joint.get());
+	btPersistentManifold* manifold = s.dispatcher.getNewManifold(&s.cube, s.second.get());
+	const btVector3 corner(0, btScalar(0.0052), 0);
+	const auto addContact = [&](double fromEndFace_deg)
+	{
+		const btScalar a = btScalar(fromEndFace_deg * SIMD_PI / 180);
+		const btVector3 outOfSecond(-btCos(a), btSin(a), 0);  // the normal on B (the second box), towards A (the cube)
+		btManifoldPoint cp(s.cube.getWorldTransform().invXform(corner), s.second->getWorldTransform().invXform(corner), outOfSecond, btScalar(-1e-5));
+		cp.m_positionWorldOnA = corner;
+		cp.m_positionWorldOnB = corner;
+		manifold->addManifoldPoint(cp);
+	};
+	addContact(50);
+	EXPECT_EQ(joined.removeContacts(s.dispatcher), 1);
+	EXPECT_EQ(manifold->getNumContacts(), 0);
+	addContact(70);
+	EXPECT_EQ(joined.removeContacts(s.dispatcher), 0);
+	EXPECT_EQ(manifold->getNumContacts(), 1);
+	manifold->clearManifold();
+	s.dispatcher.releaseManifold(manifold);
+}
+
 TEST(JoinedFaces, AFaceThatIsNotOneBoxFaceIsRefused)
 {
 	Seam s;
