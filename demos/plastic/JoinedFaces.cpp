@@ -27,8 +27,10 @@ namespace
 // caught on a part whose corner stood 8 um out of line, with a normal 49.5 degrees from the part's end face
 const btScalar kJoinedFaceCos = btScalar(0.5);
 
-// whether `point` (world) lies in the box of `object` grown by `extra` and `fraction` of its smallest half extent;
-// false for a shape that is not a box
+// whether `point` (world) lies in the box of `object` grown by `extra` and, along each of its axes, `fraction` of its
+// half extent there; false for a shape that is not a box. Across a member the step a joint makes at its seam (its
+// shear, a twist times the half width) goes with the section, not with the length of the parts: a part 1.7 mm long
+// of a 10 mm section gets 0.2 mm across it, as a long one does
 bool inBox(const btCollisionObject* object, const btVector3& point, btScalar extra, btScalar fraction)
 {
 	const btCollisionShape* shape = object->getCollisionShape();
@@ -37,9 +39,9 @@ bool inBox(const btCollisionObject* object, const btVector3& point, btScalar ext
 		return false;
 	}
 	const btVector3 half = static_cast<const btBoxShape*>(shape)->getHalfExtentsWithMargin();
-	const btScalar grow = extra + fraction * btMin(half.x(), btMin(half.y(), half.z()));
+	const btVector3 reach = half * (1 + fraction) + btVector3(extra, extra, extra);
 	const btVector3 local = object->getWorldTransform().invXform(point).absolute();
-	return local.x() <= half.x() + grow && local.y() <= half.y() + grow && local.z() <= half.z() + grow;
+	return local.x() <= reach.x() && local.y() <= reach.y() && local.z() <= reach.z();
 }
 }  // namespace
 

@@ -38,12 +38,12 @@ public:
 	bool add(const btCollisionObject* box, int face, const btCollisionObject* partner, const btTypedConstraint* joint);
 
 	// Removes the contacts of the dispatcher's manifolds whose normal on a box lies within 60 degrees of one of its
-	// joined faces' normals (more than 30 degrees from its side faces, towards the joined face), while that face's joint holds, and whose point on the box lies in its partner's box (to
-	// within the contact's depth and 4 % of the partner's smallest half extent): a point on an end face that the
-	// partner does not cover (a seam out of line, or opened on the outside of a fold) is a surface and stays. Call it
-	// after the collision detection of a step and before its solve (a world's performDiscreteCollisionDetection).
-	// A pair that touches only through such points has no contact in that step: contact-ended callbacks fire.
-	// Returns the contacts it removed.
+	// joined faces' normals (more than 30 degrees from its side faces, towards the joined face), while that face's
+	// joint holds, and whose point on the box lies in its partner's box (to within the contact's depth and, along each
+	// of the partner's axes, 4 % of its half extent there): a point on an end face that the partner does not cover (a
+	// seam out of line, or opened on the outside of a fold) is a surface and stays. Call it after the collision
+	// detection of a step and before its solve (a world's performDiscreteCollisionDetection). A pair that touches only
+	// through such points has no contact in that step: contact-ended callbacks fire. Returns the contacts it removed.
 	int removeContacts(btDispatcher& dispatcher) const;
 
 private:

@@ -142,6 +142,41 @@ TEST(JoinedFaces, AContactAtTheSeamsCornerIsRemovedUnlessItPushesOnTheSideFace)
 	s.dispatcher.releaseManifold(manifold);
 }
 
+TEST(JoinedFaces, TheSeamsStepIsMeasuredAgainstTheSectionNotTheLengthOfTheParts)
+{
+	// two parts 1.7 mm long of a 10 mm section, joined end to end at x = 0, the second 0.15 mm lower (a joint's shear
+	// at its cap): the first part's top edge at the seam stands 0.15 mm proud of the second's top face. A contact there
+	// pushing towards the seam (normal 50 degrees from the first part's +x end face) is on the seam: across the section
+	// the partner's box reaches 4 % of 5 mm = 0.2 mm further, where 4 % of the part's 0.85 mm half length would be 34 um
+	btDefaultCollisionConfiguration configuration;
+	btCollisionDispatcher dispatcher(&configuration);
+	btBoxShape partShape(btVector3(btScalar(0.00085), btScalar(0.005), btScalar(0.005)));
+	btRigidBody first(btScalar(0), nullptr, &partShape), second(btScalar(0), nullptr, &partShape);
+	first.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(btScalar(-0.00085), 0, 0)));
+	second.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(btScalar(0.00085), btScalar(-0.00015), 0)));
+	btPoint2PointConstraint joint(first, second, btVector3(btScalar(0.00085), 0, 0), btVector3(btScalar(-0.00085), btScalar(0.00015), 0));
+	btBoxShape noseShape(btVector3(btScalar(0.01), btScalar(0.01), btScalar(0.01)));
+	btCollisionObject nose;
+	nose.setCollisionShape(&noseShape);
+	plastic::JoinedFaces joined;
+	joined.add(&first, plastic::kFacePlusX, &second, &joint);
+	joined.add(&second, plastic::kFaceMinusX, &first, &joint);
+	btPersistentManifold* manifold = dispatcher.getNewManifold(&nose, &first);
+	const btVector3 edge(0, btScalar(0.005), 0);
+	const btScalar a = btScalar(50 * SIMD_PI / 180);
+	btManifoldPoint cp(nose.getWorldTransform().invXform(edge), first.getWorldTransform().invXform(edge), btVector3(btCos(a), btSin(a), 0), btScalar(-1e-5));
+	cp.m_positionWorldOnA = edge;
+	cp.m_positionWorldOnB = edge;
+	manifold->addManifoldPoint(cp);
+	EXPECT_EQ(joined.removeContacts(dispatcher), 1);
+	// 0.3 mm proud it is a step of the surface, and stays
+	second.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(btScalar(0.00085), btScalar(-0.0003), 0)));
+	manifold->addManifoldPoint(cp);
+	EXPECT_EQ(joined.removeContacts(dispatcher), 0);
+	manifold->clearManifold();
+	dispatcher.releaseManifold(manifold);
+}
+
 TEST(JoinedFaces, AFaceThatIsNotOneBoxFaceIsRefused)
 {
 	Seam s;
