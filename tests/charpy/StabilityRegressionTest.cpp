@@ -65,10 +65,7 @@ const Cell kCells[] = {
 	// (the energy rises to about 23 x E0 and the fastest part reaches 100-114 m/s: at the 100 m/s blow-up threshold,
 	// so float noise in the joint frames decides between the two; 114 m/s since the joints come from the toolkit)
 	{"fy800_spring_upstream", CharpyMethod::Spring, [](CharpyParameters& p) { p.yield_stress_pa = 800e6; }, CharpyVerdict::BlowUp},
-	// Spring2 gains energy at the default settings (report/STABILITY.md); since the halves flying off are stepped in
-	// longer steps once nothing can reach them (only their spin bounds the step), the gain runs away: 23 x E0, a part
-	// at 478 m/s
-	{"default_spring2_upstream", CharpyMethod::Spring2, [](CharpyParameters&) {}, CharpyVerdict::BlowUp},
+	{"default_spring2_upstream", CharpyMethod::Spring2, [](CharpyParameters&) {}, CharpyVerdict::EnergyGain},
 	{"dt60Hz_nosub_rigid_upstream", CharpyMethod::RigidBody, [](CharpyParameters& p) { p.dt_s = 1.0 / 60; p.contact_substep_s = 0; }, CharpyVerdict::Tunnelling},
 };
 

@@ -319,6 +319,14 @@ TEST(SubstepPolicy, FarFromContactNoStepTurnsABodyMoreThanTheBound)
 	{
 		EXPECT_NEAR(h, 2.5e-3, 1e-12);
 	}
+	// an 11 ms frame: five equal steps of 2.2 ms, not four of 2.5 ms and a short rest (a joint's position correction
+	// in a short step after long ones throws the bodies apart)
+	steps.clear();
+	EXPECT_EQ(policy.advance(0.011, near, record, [] { return 100.0; }), 5);
+	for (double h : steps)
+	{
+		EXPECT_NEAR(h, 2.2e-3, 1e-12);
+	}
 	// no spin given, or no bound: one step
 	EXPECT_EQ(policy.advance(0.01, near, record), 1);
 	plastic::ContactSubstepPolicy unbounded(plastic::ContactSubstepSettings{1e-5, 0});
