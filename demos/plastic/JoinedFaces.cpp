@@ -11,7 +11,9 @@ bool JoinedFaces::add(const btCollisionObject* box, int face, const btCollisionO
 	{
 		bit++;
 	}
-	if (bit == 6 || !box || !partner || !joint)
+	const auto isBox = [](const btCollisionObject* object)
+	{ return object && object->getCollisionShape() && object->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE; };
+	if (bit == 6 || !isBox(box) || !isBox(partner) || !joint)
 	{
 		return false;
 	}
@@ -21,6 +23,11 @@ bool JoinedFaces::add(const btCollisionObject* box, int face, const btCollisionO
 
 namespace
 {
+// the cover's tolerance: this fraction of the partner's half extent along each of its axes; a contact deeper than this
+// fraction of the box's section (its smaller half extent across the joined face) is a real penetration, not a seam's
+// step, and stays
+const btScalar kCoverFraction = btScalar(0.04);
+
 // cos 60 degrees: a contact whose normal out of the box leans more than 30 degrees from the box's side faces towards a
 // joined face pushes on the seam, not on the member's surface. Bullet's box-box contact at a seam's corner takes the
 // other box's face normal, which can lie anywhere between the side face's and the end face's: a flat nose's corner
@@ -60,7 +67,13 @@ bool JoinedFaces::onJoinedFace(const btCollisionObject* box, const btVector3& ou
 			local = outOfBox * box->getWorldTransform().getBasis();
 			inFrame = true;
 		}
-		if ((f.plus ? local[f.axis] : -local[f.axis]) > kJoinedFaceCos && inBox(f.partner, onBox, depth, btScalar(0.04)))
+		// a seam's step is a fraction of the section, and so is the depth of a body caught on it: a deeper contact is a
+		// body sinking into the member, and removing it would let it sink further (32 parts under sequential
+		// impulse sank 1.3 mm, its contacts removed up to 2.35 mm deep)
+		const btVector3 half = static_cast<const btBoxShape*>(box->getCollisionShape())->getHalfExtentsWithMargin();
+		const btScalar section = btMin(half[(f.axis + 1) % 3], half[(f.axis + 2) % 3]);
+		if ((f.plus ? local[f.axis] : -local[f.axis]) > kJoinedFaceCos && depth <= kCoverFraction * section &&
+			inBox(f.partner, onBox, depth, kCoverFraction))
 		{
 			return true;
 		}

@@ -34,14 +34,16 @@ public:
 	// `box` is joined to `partner` through its face `face` (one BoxFace) by `joint`: while the joint is enabled
 	// (btTypedConstraint::isEnabled; a broken joint is not), that face is no surface where the partner covers it. Both
 	// are collision objects whose shape is a btBoxShape; the joint must outlive this object or be given again.
-	// Returns false, and adds nothing, for a face that is not one BoxFace or a null object or joint.
+	// Returns false, and adds nothing, for a face that is not one BoxFace, a null joint, or an object that is null or
+	// whose shape is not a btBoxShape.
 	bool add(const btCollisionObject* box, int face, const btCollisionObject* partner, const btTypedConstraint* joint);
 
 	// Removes the contacts of the dispatcher's manifolds whose normal on a box lies within 60 degrees of one of its
 	// joined faces' normals (more than 30 degrees from its side faces, towards the joined face), while that face's
-	// joint holds, and whose point on the box lies in its partner's box (to within the contact's depth and, along each
-	// of the partner's axes, 4 % of its half extent there): a point on an end face that the partner does not cover (a
-	// seam out of line, or opened on the outside of a fold) is a surface and stays. Call it after the collision
+	// joint holds, whose point on the box lies in its partner's box (to within the contact's depth and, along each
+	// of the partner's axes, 4 % of its half extent there), and whose depth is at most 4 % of the box's smaller half
+	// extent across the face: a point on an end face that the partner does not cover (a seam out of line, or opened
+	// on the outside of a fold) is a surface and stays, and so is a deeper contact (a body sinking into the member). Call it after the collision
 	// detection of a step and before its solve (a world's performDiscreteCollisionDetection). A pair that touches only
 	// through such points has no contact in that step: contact-ended callbacks fire. Returns the contacts it removed.
 	int removeContacts(btDispatcher& dispatcher) const;

@@ -114,20 +114,21 @@ TEST(JoinedFaces, AnEndFaceThePartnerDoesNotCoverIsASurface)
 TEST(JoinedFaces, AContactAtTheSeamsCornerIsRemovedUnlessItPushesOnTheSideFace)
 {
 	// hand-made contacts of the cube at the second box's top corner on the seam (x = 0, y = 5.2 mm: 0.2 mm above the
-	// first box's top, which covers it within its 4 % of 5 mm), with normals out of the second box turned from its end
-	// face's (-x) towards its top face's (+y): at 50 degrees (a box-box contact's normal at a corner can be the other
-	// box's face normal) it pushes on the seam and goes; at 70 degrees it pushes on the top face, the surface, and stays
+	// first box's top, which covers it within its 4 % of 5 mm and the contact's 0.05 mm depth), with normals out of
+	// the second box turned from its end face's (-x) towards its top face's (+y): at 50 degrees (a box-box contact's
+	// normal at a corner can be the other box's face normal) it pushes on the seam and goes; at 70 degrees it pushes on
+	// the top face, the surface, and stays
 	Seam s;
 	plastic::JoinedFaces joined;
 	joined.add(s.first.get(), plastic::kFacePlusX, s.second.get(), s.joint.get());
 	joined.add(s.second.get(), plastic::kFaceMinusX, s.first.get(), s.joint.get());
 	btPersistentManifold* manifold = s.dispatcher.getNewManifold(&s.cube, s.second.get());
 	const btVector3 corner(0, btScalar(0.0052), 0);
-	const auto addContact = [&](double fromEndFace_deg)
+	const auto addContact = [&](double fromEndFace_deg, btScalar depth = btScalar(5e-5))
 	{
 		const btScalar a = btScalar(fromEndFace_deg * SIMD_PI / 180);
 		const btVector3 outOfSecond(-btCos(a), btSin(a), 0);  // the normal on B (the second box), towards A (the cube)
-		btManifoldPoint cp(s.cube.getWorldTransform().invXform(corner), s.second->getWorldTransform().invXform(corner), outOfSecond, btScalar(-1e-5));
+		btManifoldPoint cp(s.cube.getWorldTransform().invXform(corner), s.second->getWorldTransform().invXform(corner), outOfSecond, -depth);
 		cp.m_positionWorldOnA = corner;
 		cp.m_positionWorldOnB = corner;
 		manifold->addManifoldPoint(cp);
@@ -136,6 +137,11 @@ TEST(JoinedFaces, AContactAtTheSeamsCornerIsRemovedUnlessItPushesOnTheSideFace)
 	EXPECT_EQ(joined.removeContacts(s.dispatcher), 1);
 	EXPECT_EQ(manifold->getNumContacts(), 0);
 	addContact(70);
+	EXPECT_EQ(joined.removeContacts(s.dispatcher), 0);
+	EXPECT_EQ(manifold->getNumContacts(), 1);
+	manifold->clearManifold();
+	// 0.3 mm deep, more than a seam's step (4 % of the 5 mm half section): a body sinking into the member stays
+	addContact(50, btScalar(3e-4));
 	EXPECT_EQ(joined.removeContacts(s.dispatcher), 0);
 	EXPECT_EQ(manifold->getNumContacts(), 1);
 	manifold->clearManifold();
@@ -184,6 +190,11 @@ TEST(JoinedFaces, AFaceThatIsNotOneBoxFaceIsRefused)
 	EXPECT_FALSE(joined.add(s.first.get(), 0, s.second.get(), s.joint.get()));
 	EXPECT_FALSE(joined.add(s.first.get(), plastic::kFacePlusX | plastic::kFaceMinusX, s.second.get(), s.joint.get()));
 	EXPECT_FALSE(joined.add(s.first.get(), 64, s.second.get(), s.joint.get()));
+	btSphereShape ballShape(btScalar(0.005));
+	btCollisionObject ball;
+	ball.setCollisionShape(&ballShape);
+	EXPECT_FALSE(joined.add(&ball, plastic::kFacePlusX, s.second.get(), s.joint.get()));
+	EXPECT_FALSE(joined.add(s.first.get(), plastic::kFacePlusX, &ball, s.joint.get()));
 	EXPECT_FALSE(joined.add(s.first.get(), plastic::kFacePlusX, nullptr, s.joint.get()));
 	EXPECT_FALSE(joined.add(s.first.get(), plastic::kFacePlusX, s.second.get(), nullptr));
 	s.world.performDiscreteCollisionDetection();
