@@ -69,9 +69,9 @@ int pieces(const btCollisionObject* object, btScalar grow, Piece* out, int capac
 }
 
 // How far the mover can go against the other within the horizon: `grow` bounds it in every direction (its speed bound
-// times the horizon, plus gravity's and the clearance); along a normal n from the other towards the mover it is at
-// most `fixed` (the spin's part, gravity's and the clearance) plus the horizon times the mover's closing speed along
-// n, -velocity . n, where velocity is its centre's in the other's moving frame.
+// times the horizon, plus the accelerations' part and the clearance); along a normal n from the other towards the
+// mover it is at most `fixed` (the spin's part, the accelerations' and the clearance) plus the horizon times the
+// mover's closing speed along n, -velocity . n, where velocity is its centre's in the other's moving frame.
 struct Reach
 {
 	btScalar grow;
@@ -82,9 +82,9 @@ struct Reach
 
 // whether two pieces can touch within the horizon: their boxes overlap (the mover's grown by reach.grow) and, when both
 // are convex, the distance between their shapes (GJK; 0 when they overlap) is at most what the mover can close along
-// the normal between them. Translated at a constant velocity, the distance between two convex shapes is a convex
-// function of time, so it stays above its tangent, the distance less the closing speed along the normal times the
-// time; the spin moves no point more than its part of the reach. A body sliding past another closes nothing.
+// the normal between them. The shapes' gap along a fixed direction n bounds their distance from below; translated,
+// the mover changes it by its velocity along n times the time, and its spin and the accelerations move none of its
+// points more than reach.fixed. A body sliding past another closes nothing.
 bool within(const Piece& mover, const Piece& other, const Reach& reach)
 {
 	const btScalar grow = reach.grow;
@@ -134,7 +134,12 @@ double relativeGravity_m_s2(const btCollisionObject* mover, const btCollisionObj
 namespace
 {
 // the mover's centre's velocity in the other's moving frame and the bound of its spin's speed at its points
-void relativeMotion(const btCollisionObject* mover, const btCollisionObject* other, btVector3& velocity, double& spinSpeed_m_s)
+// In a turning other's frame the mover's centre also accelerates with the frame's Coriolis and centripetal terms,
+// 2 w_o x v and w_o x (w_o x r): frameAcceleration_m_s2 bounds them by 2 |w_o| |v| + |w_o|^2 |r| (r from the other's
+// centre of mass). A ball 0.7 m from the centre of a wall turning at 2 rad/s slides along its face, closing nothing
+// along the normal, and the wall's end sweeps into it after 0.64 s.
+void relativeMotion(const btCollisionObject* mover, const btCollisionObject* other, btVector3& velocity, double& spinSpeed_m_s,
+					double& frameAcceleration_m_s2)
 {
 	const btRigidBody* m = movingBody(mover);
 	const btRigidBody* o = movingBody(other);
@@ -150,10 +155,14 @@ void relativeMotion(const btCollisionObject* mover, const btCollisionObject* oth
 		velocity = m->getLinearVelocity();
 		spin = m->getAngularVelocity();
 	}
+	frameAcceleration_m_s2 = 0;
 	if (o)
 	{
-		velocity -= o->getLinearVelocity() + o->getAngularVelocity().cross(centre - o->getCenterOfMassPosition());
-		spin -= o->getAngularVelocity();
+		const btVector3 arm = centre - o->getCenterOfMassPosition();
+		const btVector3& w = o->getAngularVelocity();
+		velocity -= o->getLinearVelocity() + w.cross(arm);
+		spin -= w;
+		frameAcceleration_m_s2 = double(w.length()) * (2 * double(velocity.length()) + double(w.length()) * double(arm.length()));
 	}
 	spinSpeed_m_s = double(spin.length()) * reach;
 }
@@ -162,8 +171,8 @@ void relativeMotion(const btCollisionObject* mover, const btCollisionObject* oth
 double relativeSpeedBound_m_s(const btCollisionObject* mover, const btCollisionObject* other)
 {
 	btVector3 velocity;
-	double spinSpeed_m_s;
-	relativeMotion(mover, other, velocity, spinSpeed_m_s);
+	double spinSpeed_m_s, frameAcceleration_m_s2;
+	relativeMotion(mover, other, velocity, spinSpeed_m_s, frameAcceleration_m_s2);
 	return double(velocity.length()) + spinSpeed_m_s;
 }
 
@@ -184,9 +193,10 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 				continue;
 			}
 			Reach reach;
-			double spinSpeed_m_s;
-			relativeMotion(mover, other, reach.velocity, spinSpeed_m_s);
-			const double fixed_m = spinSpeed_m_s * horizon_s + 0.5 * relativeGravity_m_s2(mover, other) * horizon_s * horizon_s + clearance_m;
+			double spinSpeed_m_s, frameAcceleration_m_s2;
+			relativeMotion(mover, other, reach.velocity, spinSpeed_m_s, frameAcceleration_m_s2);
+			const double acceleration_m_s2 = relativeGravity_m_s2(mover, other) + frameAcceleration_m_s2;
+			const double fixed_m = spinSpeed_m_s * horizon_s + 0.5 * acceleration_m_s2 * horizon_s * horizon_s + clearance_m;
 			reach.grow = btScalar(double(reach.velocity.length()) * horizon_s + fixed_m);
 			reach.fixed = btScalar(fixed_m);
 			reach.horizon = btScalar(horizon_s);
@@ -220,7 +230,7 @@ std::vector<std::string> validate(const ContactSubstepSettings& settings)
 	if (!(std::isfinite(turn) && turn >= 0 && turn <= SIMD_PI))
 	{
 		std::ostringstream out;
-		out << "max-turn-per-step: " << turn << " is not in [0, pi] rad (0 = no bound)";
+		out << "max_turn_per_step_rad: " << turn << " is not in [0, pi] rad (0 = no bound)";
 		errors.push_back(out.str());
 	}
 	return errors;
@@ -280,7 +290,9 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 				const double w = spin();
 				if (w * piece > m_settings.max_turn_per_step_rad)
 				{
-					piece = std::max(h, piece / std::ceil(w * piece / m_settings.max_turn_per_step_rad));
+					// no step shorter than a substep, nor longer than the piece
+					const double steps = std::min(std::ceil(w * piece / m_settings.max_turn_per_step_rad), std::max(1.0, std::floor(piece / h)));
+					piece /= steps;
 				}
 			}
 		}

@@ -20,16 +20,18 @@ double relativeGravity_m_s2(const btCollisionObject* mover, const btCollisionObj
 
 // Whether some body of `movers` can touch some object of `others` within horizon_s. For each pair, the mover's
 // reach against the other's material in that time (their speed bound times horizon_s, plus 1/2 their difference in
-// gravity times horizon_s squared), plus clearance_m, is compared with the distance between their shapes: their boxes
-// first, then, for boxes within reach, the shapes' own distance (GJK; the box of a turned box reaches well past its
-// faces). Against that distance only the mover's closing speed along the normal between the shapes counts, with its
-// spin's bound: translated at a constant velocity, the distance between two convex shapes is a convex function of
-// time and stays above its tangent, so a body sliding past another at a constant gap does not close on it. A compound shape's children are taken one by one (up to 16 children; a larger compound is one box), so
-// the air between a hammer's arm and its striker is no contact, and a non-convex shape stands as its box. GJK's
-// tolerances follow gVoronoiSimplexLengthScale (patch 0018): a scene of millimetre bodies sets it around the call,
-// and the gap along the normal GJK found bounds its answer from below if it does not. The velocities are taken as
-// they are: what forces add within the horizon (joints, contacts, a hammer's turn about its pivot) is left to
-// clearance_m.
+// gravity and the other's turning frame's acceleration times horizon_s squared), plus clearance_m, is compared with
+// the distance between their shapes: their boxes first, then, for boxes within reach, the shapes' own distance (GJK;
+// the box of a turned box reaches well past its faces). Against that distance only the mover's closing speed along
+// the normal GJK found counts, with its spin's and the accelerations' part: the shapes' gap along a fixed direction n
+// bounds their distance from below and changes by the mover's velocity along n times the time, give or take what the
+// spin and the accelerations move its points, so a body sliding past another at a constant gap does not close on it.
+// The distance taken is the smaller of GJK's and that gap along n. A compound shape's children are taken one by one
+// (up to 16 children; a larger compound is one box), so the air between a hammer's arm and its striker is no contact,
+// and a non-convex shape stands as its box. GJK's tolerances follow gVoronoiSimplexLengthScale (patch 0018): a scene
+// of millimetre bodies sets it around the call, and the gap along n bounds its answer from below if it does not. The
+// velocities are taken as they are: what forces add within the horizon (joints, contacts, the torque that turns a
+// hammer about its pivot) is left to clearance_m.
 bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
 					double horizon_s, double clearance_m = 0.001);
 

@@ -75,6 +75,20 @@ TEST(SubstepPolicy, ReachIsMeasuredAgainstTheOthersMotion)
 	EXPECT_NEAR(plastic::relativeSpeedBound_m_s(s.ball.get(), s.wall.get()), 0.0, 1e-12) << "a static wall does not move";
 }
 
+TEST(SubstepPolicy, ATurningOthersFrameAcceleratesTheMover)
+{
+	// a ball at rest 0.5 m from a wall that turns at 2 rad/s about its centre of mass 0.7 m away: in the wall's frame the
+	// ball slides along the face at 1.4 m/s, closing nothing along the normal, but the wall's end sweeps into it after
+	// 0.64 s. The frame's acceleration (2 w v + w^2 r = 5.6 + 2.8 m/s^2) and the turn (2 rad/s at the ball's 0.17 m
+	// reach) close 0.48 m in 0.3 s and 2.3 m in 0.7 s
+	BallAndWall s(0.5, 0.0);
+	btRigidBody wall(btScalar(5), nullptr, &s.wallShape, btVector3(1, 1, 1));
+	wall.setWorldTransform(s.wall->getWorldTransform());
+	wall.setAngularVelocity(btVector3(0, 0, 2));
+	EXPECT_FALSE(plastic::mayTouchWithin({s.ball.get()}, {&wall}, 0.3, 0.0));
+	EXPECT_TRUE(plastic::mayTouchWithin({s.ball.get()}, {&wall}, 0.7, 0.0));
+}
+
 TEST(SubstepPolicy, AFallingBodyClosesByHalfGTimesTheHorizonSquared)
 {
 	// a ball at rest 1 mm beside a static wall, falling towards it: 1/2 g h^2 is 1.36 mm in 1/60 s, 0.34 mm in 1/120 s
@@ -331,8 +345,19 @@ TEST(SubstepPolicy, FarFromContactNoStepTurnsABodyMoreThanTheBound)
 	EXPECT_EQ(policy.advance(0.01, near, record), 1);
 	plastic::ContactSubstepPolicy unbounded(plastic::ContactSubstepSettings{1e-5, 0});
 	EXPECT_EQ(unbounded.advance(0.01, near, record, [] { return 100.0; }), 1);
-	// so fast that the bound asks for less than a substep: steps of one substep
+	// so fast that the bound asks for less than a substep: equal steps of at least one substep, none past the piece
 	EXPECT_EQ(policy.advance(1e-4, near, record, [] { return 1e5; }), 10);
+	plastic::ContactSubstepPolicy longSubstep(plastic::ContactSubstepSettings{1e-3, 0.25});
+	steps.clear();
+	EXPECT_EQ(longSubstep.advance(10.002e-3, near, record, [] { return 300.0; }), 10);  // not ten of 1 ms and 2 us
+	for (double h : steps)
+	{
+		EXPECT_NEAR(h, 1.0002e-3, 1e-12);
+	}
+	plastic::ContactSubstepPolicy coarseSubstep(plastic::ContactSubstepSettings{6e-5, 0.25});
+	steps.clear();
+	EXPECT_EQ(coarseSubstep.advance(2e-5, near, record, [] { return 2e4; }), 1);  // not one of 60 us
+	EXPECT_NEAR(steps.front(), 2e-5, 1e-15);
 }
 
 TEST(SubstepPolicy, BadSettingsAreRefusedByName)
@@ -350,7 +375,7 @@ TEST(SubstepPolicy, BadSettingsAreRefusedByName)
 	EXPECT_EQ(-1, tooLong.advance(1.0 / 60.0, far, step));  // refused settings step nothing
 	const plastic::ContactSubstepPolicy badTurn(plastic::ContactSubstepSettings{1e-5, -0.1});
 	ASSERT_EQ(1u, badTurn.errors().size());
-	EXPECT_NE(badTurn.errors().front().find("max-turn-per-step: -0.1 is not in [0, pi] rad"), std::string::npos) << badTurn.errors().front();
+	EXPECT_NE(badTurn.errors().front().find("max_turn_per_step_rad: -0.1 is not in [0, pi] rad"), std::string::npos) << badTurn.errors().front();
 	plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{0});
 	EXPECT_TRUE(policy.errors().empty());
 	EXPECT_EQ(-1, policy.advance(0, far, step));
