@@ -38,12 +38,19 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 		*history << "time_s,potential_J,kinetic_J,elastic_J,total_J,plastic_work_J,bend_angle_rad,hammer_angle_rad\n";
 	}
 	double maxBend = 0;
+	bool passed = false;
 	int historySteps = 0;
 	while (!scene.done() && !(parameters.end_when_clear && scene.clear()))
 	{
 		scene.step();
 		r.frames++;
 		if (!scene.broken()) maxBend = std::max(maxBend, scene.endToEndBend_rad());  // folded while whole
+		if (!passed && scene.passedAnvils())
+		{
+			passed = true;
+			r.pass_end_bend_angle_rad = scene.endToEndBend_rad();
+			r.pass_plastic_rotation_rad = scene.plasticRotation_rad();
+		}
 		// a row per frame that moved the world: a frame shorter than a contact substep may step nothing (the world
 		// owes it to the next frame), and a row that repeats its time would say time stood still
 		if (history && scene.internalSteps() != historySteps)
@@ -99,7 +106,8 @@ std::string toJson(const CharpyResult& r)
 		<< ",\"theta_pass_rad\":" << scene::jsonNumber(r.theta_pass_rad) << ",\"plastic_moment_Nm\":" << scene::jsonNumber(r.plastic_moment_Nm)
 		<< ",\"error_pct\":" << scene::jsonNumber(r.error_pct) << ",\"plastic_rotation_rad\":" << scene::jsonNumber(r.plastic_rotation_rad)
 		<< ",\"bend_angle_rad\":" << scene::jsonNumber(r.bend_angle_rad)
-		<< ",\"end_bend_angle_rad\":" << scene::jsonNumber(r.end_bend_angle_rad) << ",\"impact_speed_m_s\":" << scene::jsonNumber(r.impact_speed_m_s)
+		<< ",\"end_bend_angle_rad\":" << scene::jsonNumber(r.end_bend_angle_rad) << ",\"pass_end_bend_angle_rad\":" << scene::jsonNumber(r.pass_end_bend_angle_rad)
+		<< ",\"pass_plastic_rotation_rad\":" << scene::jsonNumber(r.pass_plastic_rotation_rad) << ",\"impact_speed_m_s\":" << scene::jsonNumber(r.impact_speed_m_s)
 		<< ",\"friction\":" << scene::jsonNumber(r.friction) << ",\"striker_radius_m\":" << scene::jsonNumber(r.striker_radius_m)
 		<< ",\"anvil_edge_radius_m\":" << scene::jsonNumber(r.anvil_radius_m) << ",\"anvil_taper_rad\":" << scene::jsonNumber(r.anvil_taper_rad)
 		<< ",\"broken\":" << flag(r.broken) << ",\"passed_anvils\":" << flag(r.passed_anvils) << ",\"over_the_top\":" << flag(r.over_the_top)

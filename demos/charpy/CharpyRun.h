@@ -41,6 +41,10 @@ struct CharpyResult
 	double max_energy_gain_J = 0;
 	double max_penetration_m = 0;
 	double end_bend_angle_rad = 0;  // rotation of the last part relative to the first at the end, about any axis
+	// the same, and plastic_rotation_rad, at the end of the frame in which every part first got behind the anvils (0
+	// when they never did): after it a chain flying in long steps can drift at its joints
+	double pass_end_bend_angle_rad = 0;
+	double pass_plastic_rotation_rad = 0;
 	double max_speed_m_s = 0;       // fastest dynamic body over the run
 	double max_distance_m = 0;      // farthest dynamic body centre from the origin over the run
 	double hammer_angle_end_rad = 0;  // pendulum angle from the impact position at the end (< 0: swung on past it)

@@ -84,12 +84,13 @@ CharpyVerdict classifyCharpyRun(const CharpyResult& r, std::string* why)
 				 format(" with %.3g J of plastic work for %.4g J lost", r.plastic_work_J, r.energy_loss_J);
 	}
 	else if (r.joints_book_work && r.passed_anvils && !r.broken &&
-			 r.end_bend_angle_rad - r.plastic_rotation_rad > kUnbookedBendFraction * r.theta_pass_rad)
+			 r.pass_end_bend_angle_rad - r.pass_plastic_rotation_rad > kUnbookedBendFraction * r.theta_pass_rad)
 	{
-		// the joints' elastic turn at their caps is a few hundredths of a radian end to end
+		// the joints' elastic turn at their caps is a few hundredths of a radian end to end; taken when the specimen got
+		// behind the anvils, not after its flight
 		verdict = CharpyVerdict::CameApart;
-		reason = format("the unbroken specimen passed the anvils bent %.3g rad end to end, but its joints booked %.3g rad of plastic rotation",
-						r.end_bend_angle_rad, r.plastic_rotation_rad) +
+		reason = format("the unbroken specimen got behind the anvils bent %.3g rad end to end, but its joints had booked %.3g rad of plastic rotation",
+						r.pass_end_bend_angle_rad, r.pass_plastic_rotation_rad) +
 				 format(" (%.3g J of plastic work for %.4g J lost)", r.plastic_work_J, r.energy_loss_J);
 	}
 	else if (r.tunnelled)

@@ -19,8 +19,9 @@ enum class CharpyVerdict
 	             // parts turned less than half of theta_pass relative to each other, and its joints booked less
 	             // than half of the energy lost as plastic work: neither bent nor sheared plastically, so its
 	             // joints let go in the solver (an unconverged chain, e.g. many light parts under the hammer);
-	             // or its end parts turned more than a quarter of theta_pass beyond the plastic rotation its
-	             // joints booked (in all their angular DOFs): a bend no joint yielded for
+	             // or, when it got behind the anvils, its end parts had turned more than a quarter of theta_pass
+	             // beyond the plastic rotation its joints had booked (in all their angular DOFs): a bend no joint
+	             // yielded for
 	Stable,
 };
 

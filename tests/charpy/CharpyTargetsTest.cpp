@@ -154,33 +154,39 @@ TEST(CharpyTargets, TunnellingIsToldFromTheBendNotFromTheMethod)
 
 TEST(CharpyTargets, ABendNoJointYieldedForIsAChainThatCameApart)
 {
-	// 5 ms frames without substeps (50 iterations): the halves leave over the anvils bent 2.13 rad end to end while
-	// their joint books no plastic rotation (it let go in the solver); the verdict said stable before it compared them.
-	// With the direct solve at 2 ms frames the joint books 1.58 of the 2.82 rad
+	// the direct solve at 2 ms frames without substeps: the halves get behind the anvils bent 2.82 rad end to end while
+	// their joint has booked 1.58 rad (it let go in the solver for the rest); bent more than half of theta_pass, with
+	// plastic work for most of the loss, the verdict said stable before it compared the two
 	CharpyParameters p;
 	p.method = CharpyMethod::PlasticHinge;
-	p.dt_s = 5e-3;
+	p.dt_s = 2e-3;
 	p.contact_substep_s = 0;
-	p.solver_iterations = 50;
+	p.solver = plastic::SolverKind::DirectJoint;
 	std::string why;
-	for (bool direct : {false, true})
-	{
-		if (direct)
-		{
-			p.dt_s = 2e-3;
-			p.solver_iterations = 10;
-			p.solver = plastic::SolverKind::DirectJoint;
-		}
-		const CharpyResult r = runCharpy(p);
-		ASSERT_TRUE(r.passed_anvils && !r.broken);
-		EXPECT_GT(r.end_bend_angle_rad, 0.5 * r.theta_pass_rad) << "bent enough for the older test";
-		EXPECT_GT(r.end_bend_angle_rad - r.plastic_rotation_rad, 0.25 * r.theta_pass_rad);
-		EXPECT_EQ(charpyVerdictName(classifyCharpyRun(r, &why)), "came-apart") << why;
-	}
+	const CharpyResult r = runCharpy(p);
+	ASSERT_TRUE(r.passed_anvils && !r.broken);
+	EXPECT_GT(r.end_bend_angle_rad, 0.5 * r.theta_pass_rad) << "bent enough for the older test";
+	EXPECT_GT(r.plastic_work_J, 0.5 * r.energy_loss_J) << "booked enough for the older test";
+	EXPECT_GT(r.pass_end_bend_angle_rad - r.pass_plastic_rotation_rad, 0.25 * r.theta_pass_rad);
+	EXPECT_EQ(charpyVerdictName(classifyCharpyRun(r, &why)), "came-apart") << why;
 	// the halves at the default settings bend as much as their joint yields: stable
 	const CharpyResult halves = runCharpy(CharpyParameters());
 	EXPECT_EQ(charpyVerdictName(classifyCharpyRun(halves, &why)), "stable") << why;
-	EXPECT_NEAR(halves.end_bend_angle_rad, halves.plastic_rotation_rad, 0.1) << why;
+	EXPECT_NEAR(halves.pass_end_bend_angle_rad, halves.pass_plastic_rotation_rad, 0.1) << why;
+	// 8 parts under the standard striker at 1 ms frames book 1.39 rad; flying on after the test to 15-60 ms, the
+	// chain's end-to-end bend swings between 1.40 and 2.16 rad at its drifting joints. The bend is taken when the
+	// specimen got behind the anvils, so the verdict does not depend on when the run stops
+	CharpyParameters q;
+	applyStandardGeometry(q);
+	q.parts = 8;
+	q.dt_s = 1e-3;
+	q.end_when_clear = false;
+	for (double duration_s : {0.015, 0.03, 0.06})
+	{
+		q.duration_s = duration_s;
+		const CharpyResult r = runCharpy(q);
+		EXPECT_EQ(charpyVerdictName(classifyCharpyRun(r, &why)), "stable") << duration_s << " s: " << why;
+	}
 }
 
 TEST(CharpyTargets, BrittleJointBreaksBeforeItBends)
