@@ -26,6 +26,9 @@ struct Cell
 	// and the run's accuracy (classifyCharpyAccuracy) must be accurate: passed the anvils through the gap, no deep
 	// penetration
 	bool mustBeAccurate = false;
+	// an explosion that crosses the blow-up and the energy-gain thresholds near the same time: either verdict, and the
+	// energy must at least double
+	bool eitherExplosion = false;
 };
 
 CharpyResult run(const Cell& cell, CharpyParameters& p)
@@ -61,10 +64,10 @@ const Cell kCells[] = {
 	 [](CharpyParameters& p) { p.parts = 8; p.solver = plastic::SolverKind::DirectJoint; p.speculative_contacts = true; }, CharpyVerdict::Stable, 1.02, true},
 	{"iterations1_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.solver_iterations = 1; }, CharpyVerdict::Stable},
 	{"stiffE_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.youngs_modulus_pa = 2000e9; }, CharpyVerdict::Stable},
-	// upstream, as it is: the spring explodes (thesis fig. 3.5), a rigid specimen tunnels at 1/60 s
-	// (the energy rises to about 23 x E0 and the fastest part reaches 100-114 m/s: at the 100 m/s blow-up threshold,
-	// so float noise in the joint frames decides between the two; 114 m/s since the joints come from the toolkit)
-	{"fy800_spring_upstream", CharpyMethod::Spring, [](CharpyParameters& p) { p.yield_stress_pa = 800e6; }, CharpyVerdict::BlowUp},
+	// upstream, as it is: the spring explodes (thesis fig. 3.5), a rigid specimen tunnels at 1/60 s. The exploding
+	// spring's fastest part reaches 98-173 m/s around the 100 m/s blow-up threshold (98 m/s with 800 J above E0 since
+	// the contact substeps' near test takes the closing speed along the normal), so the steps decide between the two
+	{"fy800_spring_upstream", CharpyMethod::Spring, [](CharpyParameters& p) { p.yield_stress_pa = 800e6; }, CharpyVerdict::BlowUp, 1.02, false, true},
 	{"default_spring2_upstream", CharpyMethod::Spring2, [](CharpyParameters&) {}, CharpyVerdict::EnergyGain},
 	{"dt60Hz_nosub_rigid_upstream", CharpyMethod::RigidBody, [](CharpyParameters& p) { p.dt_s = 1.0 / 60; p.contact_substep_s = 0; }, CharpyVerdict::Tunnelling},
 };
@@ -80,7 +83,15 @@ TEST_P(StabilityCell, HasTheExpectedVerdict)
 	const CharpyResult r = run(GetParam(), p);
 	std::string why;
 	const CharpyVerdict verdict = classifyCharpyRun(r, &why);
-	EXPECT_EQ(charpyVerdictName(verdict), charpyVerdictName(GetParam().expected)) << why;
+	if (GetParam().eitherExplosion)
+	{
+		EXPECT_TRUE(verdict == CharpyVerdict::BlowUp || verdict == CharpyVerdict::EnergyGain) << why;
+		EXPECT_GT(r.max_energy_gain_J, r.E0_J) << why;
+	}
+	else
+	{
+		EXPECT_EQ(charpyVerdictName(verdict), charpyVerdictName(GetParam().expected)) << why;
+	}
 	if (GetParam().expected == CharpyVerdict::Stable)
 	{
 		EXPECT_TRUE(r.finite);
