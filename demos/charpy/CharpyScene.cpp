@@ -466,10 +466,14 @@ double CharpyScene::speculativeReach_m() const
 std::string CharpyScene::speculativeReachWarning() const
 {
 	const CharpyParameters& p = m_parameters;
+	if (!p.speculative_contacts)
+	{
+		return "";
+	}
 	const double step = p.contact_substep_s > 0 ? p.contact_substep_s : p.dt_s;
 	const double reach = speculativeReach_m();
 	const double closing = m_impactSpeed_m_s * step;
-	if (!p.speculative_contacts || !(closing > reach))
+	if (!(closing > reach))
 	{
 		return "";
 	}
