@@ -30,6 +30,8 @@ constexpr double kPoisson = 0.3;
 // parts flying off after the fold, a millimetre from the nose and the anvils, no longer hold the world at the substep.
 constexpr double kNearClearanceWidths = 0.01;
 
+double nearClearance_m(const CharpyParameters& p) { return kNearClearanceWidths * p.specimen_width_m; }
+
 btTransform translation(double x, double y, double z)
 {
 	btTransform t;
@@ -498,7 +500,7 @@ double CharpyScene::fastestSpin_rad_s() const
 bool CharpyScene::nearContact(double horizon_s) const
 {
 	SpecimenLengthScale scale(m_parameters.specimen_width_m);
-	return plastic::mayTouchWithin(m_contactMovers, m_contactOthers, horizon_s, kNearClearanceWidths * m_parameters.specimen_width_m);
+	return plastic::mayTouchWithin(m_contactMovers, m_contactOthers, horizon_s, nearClearance_m(m_parameters));
 }
 
 void CharpyScene::step()
@@ -691,8 +693,7 @@ bool CharpyScene::passedAnvils() const
 bool CharpyScene::clear() const
 {
 	SpecimenLengthScale scale(m_parameters.specimen_width_m);
-	return passedAnvils() &&
-		   !plastic::mayTouchWithin(m_contactMovers, m_contactAnvils, m_parameters.dt_s, kNearClearanceWidths * m_parameters.specimen_width_m);
+	return passedAnvils() && !plastic::mayTouchWithin(m_contactMovers, m_contactAnvils, m_parameters.dt_s, nearClearance_m(m_parameters));
 }
 
 double CharpyScene::kineticAgainstHammer_j() const

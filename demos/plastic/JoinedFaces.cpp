@@ -34,18 +34,16 @@ const btScalar kCoverFraction = btScalar(0.04);
 // caught on a part whose corner stood 8 um out of line, with a normal 49.5 degrees from the part's end face
 const btScalar kJoinedFaceCos = btScalar(0.5);
 
-// whether `point` (world) lies in the box of `object` grown by `extra` and, along each of its axes, `fraction` of its
-// half extent there; false for a shape that is not a box. Across a member the step a joint makes at its seam (its
-// shear, a twist times the half width) goes with the section, not with the length of the parts: a part 1.7 mm long
-// of a 10 mm section gets 0.2 mm across it, as a long one does
+// the half extents of a registered object (add() takes boxes only)
+btVector3 halfExtents(const btCollisionObject* box) { return static_cast<const btBoxShape*>(box->getCollisionShape())->getHalfExtentsWithMargin(); }
+
+// whether `point` (world) lies in the box `object` grown by `extra` and, along each of its axes, `fraction` of its half
+// extent there. Across a member the step a joint makes at its seam (its shear, a twist times the half width) goes with
+// the section, not with the length of the parts: a part 1.7 mm long of a 10 mm section gets 0.2 mm across it, as a
+// long one does
 bool inBox(const btCollisionObject* object, const btVector3& point, btScalar extra, btScalar fraction)
 {
-	const btCollisionShape* shape = object->getCollisionShape();
-	if (shape->getShapeType() != BOX_SHAPE_PROXYTYPE)
-	{
-		return false;
-	}
-	const btVector3 half = static_cast<const btBoxShape*>(shape)->getHalfExtentsWithMargin();
+	const btVector3 half = halfExtents(object);
 	const btVector3 reach = half * (1 + fraction) + btVector3(extra, extra, extra);
 	const btVector3 local = object->getWorldTransform().invXform(point).absolute();
 	return local.x() <= reach.x() && local.y() <= reach.y() && local.z() <= reach.z();
@@ -70,7 +68,7 @@ bool JoinedFaces::onJoinedFace(const btCollisionObject* box, const btVector3& ou
 		// a seam's step is a fraction of the section, and so is the depth of a body caught on it: a deeper contact is a
 		// body sinking into the member, and removing it would let it sink further (32 parts under sequential
 		// impulse sank 1.3 mm, its contacts removed up to 2.35 mm deep)
-		const btVector3 half = static_cast<const btBoxShape*>(box->getCollisionShape())->getHalfExtentsWithMargin();
+		const btVector3 half = halfExtents(box);
 		const btScalar section = btMin(half[(f.axis + 1) % 3], half[(f.axis + 2) % 3]);
 		if ((f.plus ? local[f.axis] : -local[f.axis]) > kJoinedFaceCos && depth <= kCoverFraction * section &&
 			inBox(f.partner, onBox, depth, kCoverFraction))

@@ -43,9 +43,10 @@ public:
 	// joint holds, whose point on the box lies in its partner's box (to within the contact's depth and, along each
 	// of the partner's axes, 4 % of its half extent there), and whose depth is at most 4 % of the box's smaller half
 	// extent across the face: a point on an end face that the partner does not cover (a seam out of line, or opened
-	// on the outside of a fold) is a surface and stays, and so is a deeper contact (a body sinking into the member). Call it after the collision
-	// detection of a step and before its solve (a world's performDiscreteCollisionDetection). A pair that touches only
-	// through such points has no contact in that step: contact-ended callbacks fire. Returns the contacts it removed.
+	// on the outside of a fold) is a surface and stays, and so is a deeper contact (a body sinking into the member).
+	// Call it after the collision detection of a step and before its solve (a world's
+	// performDiscreteCollisionDetection). A pair that touches only through such points has no contact in that step:
+	// contact-ended callbacks fire. Returns the contacts it removed.
 	int removeContacts(btDispatcher& dispatcher) const;
 
 private:

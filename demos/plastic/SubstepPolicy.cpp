@@ -133,8 +133,8 @@ double relativeGravity_m_s2(const btCollisionObject* mover, const btCollisionObj
 
 namespace
 {
-// the mover's centre's velocity in the other's moving frame and the bound of its spin's speed at its points
-// In a turning other's frame the mover's centre also accelerates with the frame's Coriolis and centripetal terms,
+// The mover's centre's velocity in the other's moving frame and the bound of its spin's speed at its points. In a
+// turning other's frame the mover's centre also accelerates with the frame's Coriolis and centripetal terms,
 // 2 w_o x v and w_o x (w_o x r): frameAcceleration_m_s2 bounds them by 2 |w_o| |v| + |w_o|^2 |r| (r from the other's
 // centre of mass). A ball 0.7 m from the centre of a wall turning at 2 rad/s slides along its face, closing nothing
 // along the normal, and the wall's end sweeps into it after 0.64 s.

@@ -72,9 +72,8 @@ class FrictionModelTest(unittest.TestCase):
         # (report/FRICTION.md): every one of the 10 runs with friction 0.05-0.25 within 3 % of the model (-1.9 to
         # +2.5 %), in 109-274 internal steps with the sharp anvils and 97-132 with the ISO anvils (227-316 and 140-166
         # with the near test's 1 mm allowance and the whole speed counted, 266-333 and 266-283 before it measured the
-        # shapes' distance). Before the world stepped on its own
-        # clock in contact (frames cut into equal steps), 8 of 10: the sharp anvils at 0.2 jammed the bent specimen in
-        # the gap (+23.6 %).
+        # shapes' distance). Before the world stepped on its own clock in contact (frames cut into equal steps), 8 of
+        # 10: the sharp anvils at 0.2 jammed the bent specimen in the gap (+23.6 %).
         coarse = ("--solver=direct", "--speculative-contacts", "--contact-substep=6e-5", "--dt=1e-3")
         iso = ("--anvil-radius=0.001", "--anvil-taper=0.192")
         cases = [(anvils, mu) for anvils in ((), iso) for mu in (0.05, 0.1, 0.15, 0.2, 0.25)]
