@@ -270,48 +270,61 @@ TEST(DirectJointSolver, OnlyTheJointsOfClosedLoopsCorrectPositionsWithoutMomentu
 namespace
 {
 // Two 1 kg boxes of 0.2 m fixed to each other one behind the other along Z (btFixedConstraint, so the call has a
-// joint), at rest on a static ground box with friction 0.5 (0.5 x 1), gravity 10 m/s^2, at step_s for 1 s. The back
-// box is pushed along Z, through both centres, by push_fraction of the pair's static friction limit (2 mu m g). Returns
-// how far the pair moved (m).
+// joint), on a static ground box (friction 1) whose top is at y = 0, their bottoms sunk_m into it.
+struct JoinedPairOnGround
+{
+	SolverWorld setup;
+	btBoxShape groundShape{btVector3(20, 1, 20)};
+	btRigidBody ground{0, nullptr, &groundShape};
+	btBoxShape shape{btVector3(btScalar(0.1), btScalar(0.1), btScalar(0.1))};
+	std::vector<std::unique_ptr<btRigidBody>> boxes;
+	std::unique_ptr<btFixedConstraint> joint;
+
+	JoinedPairOnGround(bool direct, double friction, double sunk_m) : setup(direct)
+	{
+		ground.getWorldTransform().setOrigin(btVector3(0, -1, 0));
+		ground.setFriction(1);
+		setup.world.addRigidBody(&ground);
+		btVector3 inertia;
+		shape.calculateLocalInertia(1, inertia);
+		for (int i = 0; i < 2; i++)
+		{
+			btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &shape, inertia);
+			info.m_startWorldTransform.setOrigin(btVector3(0, btScalar(0.1 - sunk_m), btScalar(-0.2 * i)));
+			info.m_friction = btScalar(friction);
+			boxes.push_back(std::make_unique<btRigidBody>(info));
+			boxes.back()->setActivationState(DISABLE_DEACTIVATION);
+			setup.world.addRigidBody(boxes.back().get());
+		}
+		joint = std::make_unique<btFixedConstraint>(*boxes[0], *boxes[1], btTransform(btQuaternion::getIdentity(), btVector3(0, 0, btScalar(-0.1))),
+													 btTransform(btQuaternion::getIdentity(), btVector3(0, 0, btScalar(0.1))));
+		setup.world.addConstraint(joint.get(), true);
+	}
+	~JoinedPairOnGround()
+	{
+		setup.world.removeConstraint(joint.get());
+		for (auto& box : boxes) setup.world.removeRigidBody(box.get());
+		setup.world.removeRigidBody(&ground);
+	}
+};
+
+// The pair at rest on the ground with friction 0.5 (0.5 x 1), gravity 10 m/s^2, at step_s for 1 s. The back box is
+// pushed along Z, through both centres, by push_fraction of the pair's static friction limit (2 mu m g). Returns how
+// far the pair moved (m).
 double pushedPair_m(bool direct, double push_fraction, double step_s, int* fallbacks)
 {
-	SolverWorld setup(direct);
-	btDiscreteDynamicsWorld& world = setup.world;
 	const double g = 10, mu = 0.5;
+	JoinedPairOnGround pair(direct, mu, 0);
+	btDiscreteDynamicsWorld& world = pair.setup.world;
 	world.setGravity(btVector3(0, btScalar(-g), 0));
-	btBoxShape groundShape(btVector3(20, 1, 20));
-	btRigidBody ground(0, nullptr, &groundShape);
-	ground.getWorldTransform().setOrigin(btVector3(0, -1, 0));
-	ground.setFriction(1);
-	world.addRigidBody(&ground);
-	btBoxShape shape(btVector3(btScalar(0.1), btScalar(0.1), btScalar(0.1)));
-	btVector3 inertia;
-	shape.calculateLocalInertia(1, inertia);
-	std::vector<std::unique_ptr<btRigidBody>> boxes;
-	for (int i = 0; i < 2; i++)
-	{
-		btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &shape, inertia);
-		info.m_startWorldTransform.setOrigin(btVector3(0, btScalar(0.1), btScalar(-0.2 * i)));
-		info.m_friction = btScalar(mu);
-		boxes.push_back(std::make_unique<btRigidBody>(info));
-		boxes.back()->setActivationState(DISABLE_DEACTIVATION);
-		world.addRigidBody(boxes.back().get());
-	}
-	btFixedConstraint joint(*boxes[0], *boxes[1], btTransform(btQuaternion::getIdentity(), btVector3(0, 0, btScalar(-0.1))),
-							btTransform(btQuaternion::getIdentity(), btVector3(0, 0, btScalar(0.1))));
-	world.addConstraint(&joint, true);
-	const btVector3 start = boxes[0]->getCenterOfMassPosition();
+	const btVector3 start = pair.boxes[0]->getCenterOfMassPosition();
 	for (int k = 0; k < int(1.0 / step_s + 0.5); k++)
 	{
-		boxes[1]->applyCentralForce(btVector3(0, 0, btScalar(push_fraction * 2 * mu * g)));
+		pair.boxes[1]->applyCentralForce(btVector3(0, 0, btScalar(push_fraction * 2 * mu * g)));
 		world.stepSimulation(btScalar(step_s), 0, btScalar(step_s));
 	}
-	const double moved = double((boxes[0]->getCenterOfMassPosition() - start).length());
-	if (fallbacks) *fallbacks = setup.fallbacks();
-	world.removeConstraint(&joint);
-	for (auto& box : boxes) world.removeRigidBody(box.get());
-	world.removeRigidBody(&ground);
-	return moved;
+	if (fallbacks) *fallbacks = pair.setup.fallbacks();
+	return double((pair.boxes[0]->getCenterOfMassPosition() - start).length());
 }
 }  // namespace
 
@@ -351,57 +364,32 @@ struct SunkPair
 	int fallbacks = 0;
 };
 
-// Two 1 kg boxes of 0.2 m fixed to each other (btFixedConstraint, so the call has a joint), sunk 2 mm into a static
-// ground box, without gravity, at 1/60 s steps for 1 s.
+// The pair sunk 2 mm into the ground, without gravity, at 1/60 s steps for 1 s.
 SunkPair sunkPair(bool direct, bool splitImpulse)
 {
-	SolverWorld setup(direct);
-	btDiscreteDynamicsWorld& world = setup.world;
+	JoinedPairOnGround pair(direct, 0.5, 0.002);
+	btDiscreteDynamicsWorld& world = pair.setup.world;
 	world.setGravity(btVector3(0, 0, 0));
 	world.getSolverInfo().m_splitImpulse = splitImpulse ? 1 : 0;
-	const double sunk_m = 0.002;
-	btBoxShape groundShape(btVector3(20, 1, 20));
-	btRigidBody ground(0, nullptr, &groundShape);
-	ground.getWorldTransform().setOrigin(btVector3(0, -1, 0));
-	world.addRigidBody(&ground);
-	btBoxShape shape(btVector3(btScalar(0.1), btScalar(0.1), btScalar(0.1)));
-	btVector3 inertia;
-	shape.calculateLocalInertia(1, inertia);
-	std::vector<std::unique_ptr<btRigidBody>> boxes;
-	for (int i = 0; i < 2; i++)
-	{
-		btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &shape, inertia);
-		info.m_startWorldTransform.setOrigin(btVector3(0, btScalar(0.1 - sunk_m), btScalar(-0.2 * i)));
-		info.m_friction = btScalar(0.5);
-		boxes.push_back(std::make_unique<btRigidBody>(info));
-		boxes.back()->setActivationState(DISABLE_DEACTIVATION);
-		world.addRigidBody(boxes.back().get());
-	}
-	btFixedConstraint joint(*boxes[0], *boxes[1], btTransform(btQuaternion::getIdentity(), btVector3(0, 0, btScalar(-0.1))),
-							btTransform(btQuaternion::getIdentity(), btVector3(0, 0, btScalar(0.1))));
-	world.addConstraint(&joint, true);
 	const double step_s = 1.0 / 60;
 	SunkPair r;
-	const double y0 = double(boxes[0]->getCenterOfMassPosition().y());
+	const double y0 = double(pair.boxes[0]->getCenterOfMassPosition().y());
 	for (int k = 0; k < 60; k++)
 	{
 		world.stepSimulation(btScalar(step_s), 0, btScalar(step_s));
 		if (k == 0)
 		{
-			r.rise_m = double(boxes[0]->getCenterOfMassPosition().y()) - y0;
-			r.speed_m_s = double(boxes[0]->getLinearVelocity().length());
+			r.rise_m = double(pair.boxes[0]->getCenterOfMassPosition().y()) - y0;
+			r.speed_m_s = double(pair.boxes[0]->getLinearVelocity().length());
 		}
 	}
-	r.final_height_m = double(boxes[0]->getCenterOfMassPosition().y()) - 0.1;
-	for (auto& box : boxes)
+	r.final_height_m = double(pair.boxes[0]->getCenterOfMassPosition().y()) - 0.1;
+	for (auto& box : pair.boxes)
 	{
 		r.final_kinetic_j += 0.5 * double(box->getLinearVelocity().length2()) / double(box->getInvMass());
 	}
-	r.relaxed_calls = setup.relaxedCalls();
-	r.fallbacks = setup.fallbacks();
-	world.removeConstraint(&joint);
-	for (auto& box : boxes) world.removeRigidBody(box.get());
-	world.removeRigidBody(&ground);
+	r.relaxed_calls = pair.setup.relaxedCalls();
+	r.fallbacks = pair.setup.fallbacks();
 	return r;
 }
 }  // namespace
