@@ -284,18 +284,18 @@ struct ReportedFixedConstraint : btFixedConstraint
 	}
 };
 
-// Two 1 kg boxes of 0.2 m fixed to each other one behind the other along Z (btFixedConstraint, so the call has a
-// joint), on a static ground box (friction 1) whose top is at y = 0, their bottoms sunk_m into it.
-struct JoinedPairOnGround
+// Two 1 kg boxes of 0.2 m one behind the other along Z on a static ground box (friction 1) whose top is at y = 0, the
+// bottom of box i sunk_m[i] into it (negative: above it), joined by the joint join() is given (so the call has a joint).
+struct PairOnGround
 {
 	SolverWorld setup;
 	btBoxShape groundShape{btVector3(20, 1, 20)};
 	btRigidBody ground{0, nullptr, &groundShape};
 	btBoxShape shape{btVector3(btScalar(0.1), btScalar(0.1), btScalar(0.1))};
 	std::vector<std::unique_ptr<btRigidBody>> boxes;
-	std::unique_ptr<ReportedFixedConstraint> joint;
+	std::unique_ptr<btTypedConstraint> joint;
 
-	JoinedPairOnGround(bool direct, double friction, double sunk_m) : setup(direct)
+	PairOnGround(bool direct, double friction, const double (&sunk_m)[2]) : setup(direct)
 	{
 		ground.getWorldTransform().setOrigin(btVector3(0, -1, 0));
 		ground.setFriction(1);
@@ -305,19 +305,30 @@ struct JoinedPairOnGround
 		for (int i = 0; i < 2; i++)
 		{
 			btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &shape, inertia);
-			info.m_startWorldTransform.setOrigin(btVector3(0, btScalar(0.1 - sunk_m), btScalar(-0.2 * i)));
+			info.m_startWorldTransform.setOrigin(btVector3(0, btScalar(0.1 - sunk_m[i]), btScalar(-0.2 * i)));
 			info.m_friction = btScalar(friction);
 			boxes.push_back(std::make_unique<btRigidBody>(info));
 			boxes.back()->setActivationState(DISABLE_DEACTIVATION);
 			setup.world.addRigidBody(boxes.back().get());
 		}
-		joint = std::make_unique<ReportedFixedConstraint>(*boxes[0], *boxes[1], btTransform(btQuaternion::getIdentity(), btVector3(0, 0, btScalar(-0.1))),
-														  btTransform(btQuaternion::getIdentity(), btVector3(0, 0, btScalar(0.1))));
-		setup.world.addConstraint(joint.get(), true);
 	}
-	~JoinedPairOnGround()
+	template <class Joint>
+	Joint& join(std::unique_ptr<Joint> made)
 	{
-		setup.world.removeConstraint(joint.get());
+		Joint& added = *made;
+		setup.world.addConstraint(made.get(), true);
+		joint = std::move(made);
+		return added;
+	}
+	// the boxes fixed to each other face to face
+	ReportedFixedConstraint& fix()
+	{
+		return join(std::make_unique<ReportedFixedConstraint>(*boxes[0], *boxes[1], btTransform(btQuaternion::getIdentity(), btVector3(0, 0, btScalar(-0.1))),
+															   btTransform(btQuaternion::getIdentity(), btVector3(0, 0, btScalar(0.1)))));
+	}
+	~PairOnGround()
+	{
+		if (joint) setup.world.removeConstraint(joint.get());
 		for (auto& box : boxes) setup.world.removeRigidBody(box.get());
 		setup.world.removeRigidBody(&ground);
 	}
@@ -329,7 +340,8 @@ struct JoinedPairOnGround
 double pushedPair_m(bool direct, double push_fraction, double step_s, int* fallbacks)
 {
 	const double g = 10, mu = 0.5;
-	JoinedPairOnGround pair(direct, mu, 0);
+	PairOnGround pair(direct, mu, {0, 0});
+	pair.fix();
 	btDiscreteDynamicsWorld& world = pair.setup.world;
 	world.setGravity(btVector3(0, btScalar(-g), 0));
 	const btVector3 start = pair.boxes[0]->getCenterOfMassPosition();
@@ -383,7 +395,8 @@ struct SunkPair
 // The pair sunk 2 mm into the ground, without gravity, at 1/60 s steps for 1 s.
 SunkPair sunkPair(bool direct, bool splitImpulse)
 {
-	JoinedPairOnGround pair(direct, 0.5, 0.002);
+	PairOnGround pair(direct, 0.5, {0.002, 0.002});
+	const ReportedFixedConstraint& joint = pair.fix();
 	btDiscreteDynamicsWorld& world = pair.setup.world;
 	world.setGravity(btVector3(0, 0, 0));
 	world.getSolverInfo().m_splitImpulse = splitImpulse ? 1 : 0;
@@ -404,7 +417,7 @@ SunkPair sunkPair(bool direct, bool splitImpulse)
 	{
 		r.final_kinetic_j += 0.5 * double(box->getLinearVelocity().length2()) / double(box->getInvMass());
 	}
-	r.reported_m_s = double(pair.joint->first_velocity_a.y());
+	r.reported_m_s = double(joint.first_velocity_a.y());
 	r.relaxed_calls = pair.setup.relaxedCalls();
 	r.fallbacks = pair.setup.fallbacks();
 	return r;
@@ -444,46 +457,23 @@ TEST(DirectJointSolver, AContactsPositionCorrectionMovesTheBodiesWithoutMomentum
 // the bodies back by the flow the lock had just booked (a review's find): 1.19e-2 rad booked for 7.5e-3 rad turned.
 TEST(DirectJointSolver, ASplitCorrectedLockFollowsTheFlowTheContactCorrectionMakesItBook)
 {
-	SolverWorld setup(true);
-	btDiscreteDynamicsWorld& world = setup.world;
+	PairOnGround pair(true, 0.5, {0.002, -0.005});
+	btDiscreteDynamicsWorld& world = pair.setup.world;
 	world.setGravity(btVector3(0, 0, 0));
-	btBoxShape groundShape(btVector3(20, 1, 20));
-	btRigidBody ground(0, nullptr, &groundShape);
-	ground.getWorldTransform().setOrigin(btVector3(0, -1, 0));
-	ground.setFriction(1);
-	world.addRigidBody(&ground);
-	btBoxShape shape(btVector3(btScalar(0.1), btScalar(0.1), btScalar(0.1)));
-	btVector3 inertia;
-	shape.calculateLocalInertia(1, inertia);
-	const btScalar heights[2] = {btScalar(0.098), btScalar(0.105)};
-	std::vector<std::unique_ptr<btRigidBody>> boxes;
-	for (int i = 0; i < 2; i++)
-	{
-		btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &shape, inertia);
-		info.m_startWorldTransform.setOrigin(btVector3(0, heights[i], btScalar(-0.2 * i)));
-		info.m_friction = btScalar(0.5);
-		boxes.push_back(std::make_unique<btRigidBody>(info));
-		boxes.back()->setActivationState(DISABLE_DEACTIVATION);
-		world.addRigidBody(boxes.back().get());
-	}
-	const btScalar half = (heights[1] - heights[0]) / 2;
-	btPlasticHingeConstraint hinge(*boxes[0], *boxes[1], btVector3(0, half, btScalar(-0.1)), btVector3(0, -half, btScalar(0.1)), btVector3(1, 0, 0),
-								   btVector3(1, 0, 0));
+	const btScalar half = btScalar(0.0035);  // half the boxes' difference in height: the hinge's pivot between them
+	btPlasticHingeConstraint& hinge = pair.join(std::make_unique<btPlasticHingeConstraint>(
+		*pair.boxes[0], *pair.boxes[1], btVector3(0, half, btScalar(-0.1)), btVector3(0, -half, btScalar(0.1)), btVector3(1, 0, 0), btVector3(1, 0, 0)));
 	hinge.setPlasticMoment(btScalar(1e-4));
 	hinge.setSplitPositionCorrection(true);
-	world.addConstraint(&hinge, true);
 	const double angle0 = double(hinge.getHingeAngle());
 	for (int k = 0; k < 8; k++)
 	{
 		world.stepSimulation(btScalar(1.0 / 60), 0, btScalar(1.0 / 60));
 	}
-	EXPECT_GT(setup.relaxedCalls(), 0);
-	EXPECT_EQ(0, setup.fallbacks());
+	EXPECT_GT(pair.setup.relaxedCalls(), 0);
+	EXPECT_EQ(0, pair.setup.fallbacks());
 	const double turned = std::fabs(double(hinge.getHingeAngle()) - angle0);
 	EXPECT_GT(turned, 1e-3) << "the correction did not turn the hinge: the scene does not test the lock";
 	EXPECT_LT(std::fabs(double(hinge.getHingeAngle() - hinge.getLockAngle())), 1e-6) << "the lock left the hinge";
 	EXPECT_NEAR(double(hinge.getCurrentPlasticRotation()), turned, 0.02 * turned) << "the lock booked flow the hinge did not make";
-	world.removeConstraint(&hinge);
-	for (auto& box : boxes) world.removeRigidBody(box.get());
-	world.removeRigidBody(&ground);
 }
