@@ -78,13 +78,16 @@ struct Reach
 	btScalar fixed;
 	btVector3 velocity;
 	btScalar horizon;
+	btScalar clearance;
+	btScalar speculativeReach;  // 0: no speculative contacts
 };
 
 // whether two pieces can touch within the horizon: their boxes overlap (the mover's grown by reach.grow) and, when both
 // are convex, the distance between their shapes (GJK; 0 when they overlap) is at most what the mover can close along
 // the normal between them. The shapes' gap along a fixed direction n bounds their distance from below; translated,
 // the mover changes it by its velocity along n times the time, and its spin and the accelerations move none of its
-// points more than reach.fixed. A body sliding past another closes nothing.
+// points more than reach.fixed. A body sliding past another closes nothing. With speculative contacts, a pair within
+// their reach counts only if it can move more than half the reach against the other within the horizon.
 bool within(const Piece& mover, const Piece& other, const Reach& reach)
 {
 	const btScalar grow = reach.grow;
@@ -118,7 +121,12 @@ bool within(const Piece& mover, const Piece& other, const Reach& reach)
 	const btVector3 otherNearest = other.transform(other.shape->localGetSupportingVertex(n * other.transform.getBasis()));
 	const btScalar alongNormal = n.dot(moverNearest) - n.dot(otherNearest);
 	const btScalar closes = reach.fixed + btMax(btScalar(0), -reach.velocity.dot(n)) * reach.horizon;
-	return btMin(closest.m_distance, alongNormal) <= btMin(grow, closes);
+	const btScalar distance = btMin(closest.m_distance, alongNormal);
+	if (reach.speculativeReach > 0 && distance <= reach.speculativeReach)
+	{
+		return closes - reach.clearance > reach.speculativeReach / 2;
+	}
+	return distance <= btMin(grow, closes);
 }
 }  // namespace
 
@@ -177,7 +185,7 @@ double relativeSpeedBound_m_s(const btCollisionObject* mover, const btCollisionO
 }
 
 bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
-					double horizon_s, double clearance_m)
+					double horizon_s, double clearance_m, double speculativeReach_m)
 {
 	// no allocation: a scene asks this several times per frame
 	const int kCapacity = 16;  // children of a compound tested one by one; a larger compound is one box
@@ -200,6 +208,8 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 			reach.grow = btScalar(double(reach.velocity.length()) * horizon_s + fixed_m);
 			reach.fixed = btScalar(fixed_m);
 			reach.horizon = btScalar(horizon_s);
+			reach.clearance = btScalar(clearance_m);
+			reach.speculativeReach = btScalar(speculativeReach_m);
 			const int numMover = pieces(mover, reach.grow, mine, kCapacity);
 			for (int i = 0; i < numMover; i++)
 			{
@@ -210,6 +220,33 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 						return true;
 					}
 				}
+			}
+		}
+	}
+	return false;
+}
+
+bool pressedContact(btDispatcher& dispatcher, const std::vector<const btCollisionObject*>& movers,
+					const std::vector<const btCollisionObject*>& others)
+{
+	auto in = [](const std::vector<const btCollisionObject*>& set, const btCollisionObject* o)
+	{
+		return std::find(set.begin(), set.end(), o) != set.end();
+	};
+	for (int i = 0; i < dispatcher.getNumManifolds(); i++)
+	{
+		const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(i);
+		const btCollisionObject* a = manifold->getBody0();
+		const btCollisionObject* b = manifold->getBody1();
+		if (!(in(movers, a) && in(others, b)) && !(in(movers, b) && in(others, a)))
+		{
+			continue;
+		}
+		for (int j = 0; j < manifold->getNumContacts(); j++)
+		{
+			if (manifold->getContactPoint(j).getAppliedImpulse() > 0)
+			{
+				return true;
 			}
 		}
 	}
@@ -266,8 +303,22 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 				// the frame shorter than one is owed to the next frame (the world then lags the frame by less than a
 				// substep, as in upstream's fixed-step stepSimulation), so no frame step cuts a short step into the
 				// contacts; a rest that is a whole number of substeps is taken in equal steps
+				// The clock's ticks are the multiples of the substep from the policy's start, whatever steps the frames
+				// took out of contact: a contact that begins between two ticks is met by the step to the next one, so
+				// the frame step does not move the phase of an impact within the substeps.
+				const double sinceTick = std::fmod(m_clock_s, h);
+				const double toTick = sinceTick > 1e-6 * h && h - sinceTick > 1e-6 * h ? h - sinceTick : 0;
 				const double whole = std::round(remaining / h);
-				if (whole >= 1 && std::fabs(remaining - whole * h) <= 1e-9 * remaining)
+				if (toTick > 0)
+				{
+					if (toTick > remaining + 1e-12 * frame_s)
+					{
+						m_owed_s = remaining;
+						break;
+					}
+					piece = toTick;
+				}
+				else if (whole >= 1 && std::fabs(remaining - whole * h) <= 1e-9 * remaining)
 				{
 					piece = remaining / whole;
 				}
@@ -299,6 +350,7 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 		step(piece);
 		steps++;
 		remaining -= piece;
+		m_clock_s += piece;
 	}
 	return steps;
 }

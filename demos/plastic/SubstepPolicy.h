@@ -7,6 +7,7 @@
 #include <vector>
 
 class btCollisionObject;
+class btDispatcher;
 
 namespace plastic
 {
@@ -32,8 +33,19 @@ double relativeGravity_m_s2(const btCollisionObject* mover, const btCollisionObj
 // of millimetre bodies sets it around the call, and the gap along n bounds its answer from below if it does not. The
 // velocities are taken as they are: what forces add within the horizon (joints, contacts, the torque that turns a
 // hammer about its pivot) is left to clearance_m.
+// With speculative contacts (speculativeReach_m > 0, the distance within which the pair's contacts are made before
+// they touch: the shapes' contact breaking threshold), a pair already that close is left to them: it counts only if
+// its motion within the horizon (closing speed, spin and accelerations, without clearance_m) is more than half of
+// that reach. A part sliding along an anvil's wall 30-80 um away no longer holds the world at the substep for as long
+// as it slides. Whether such a pair's contacts carry load is not seen here (pressedContact).
 bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
-					double horizon_s, double clearance_m = 0.001);
+					double horizon_s, double clearance_m = 0.001, double speculativeReach_m = 0);
+
+// Whether a contact point between a body of `movers` and one of `others` carried an impulse in the world's last
+// step (their manifolds as the dispatcher holds them): a pair pressed together, whose forces a longer step would
+// change, as against one that touches only through speculative points that hold nothing.
+bool pressedContact(btDispatcher& dispatcher, const std::vector<const btCollisionObject*>& movers,
+					const std::vector<const btCollisionObject*>& others);
 
 struct ContactSubstepSettings
 {
@@ -58,13 +70,15 @@ public:
 	explicit ContactSubstepPolicy(const ContactSubstepSettings& settings);
 
 	// Advances one frame: the part of the frame that reaches no contact within its own length is one step (or a
-	// few halves); in or near contact the world steps at contact_substep_s on a clock of its own, and what is left of
-	// the frame, less than a substep, is owed to the next frame (owed_s; as upstream's fixed-step stepSimulation lags
-	// its frames), so the frame step does not change the steps the contacts see. A rest of the frame that is a whole
-	// number of substeps is taken in that many equal steps. Out of contact, what is owed is stepped with the frame,
-	// and, given `spin`, a step is cut so that it turns no body more than max_turn_per_step_rad. The contact test is
-	// made again after every internal step. Returns the number of internal steps; -1, with no step, for a frame that
-	// is not a positive finite time or when errors() is not empty.
+	// few halves); in or near contact the world steps at contact_substep_s on a clock of its own, whose ticks are the
+	// multiples of contact_substep_s from the policy's start (a contact met between two ticks is stepped to the next
+	// one first), and what is left of the frame, less than a substep, is owed to the next frame (owed_s; as upstream's
+	// fixed-step stepSimulation lags its frames), so the frame step does not change the steps the contacts see, nor
+	// the phase of an impact within them. A rest of the frame that is a whole number of substeps is taken in that many
+	// equal steps. Out of contact, what is owed is stepped with the frame, and, given `spin`, a step is cut so that it
+	// turns no body more than max_turn_per_step_rad. The contact test is made again after every internal step. Returns
+	// the number of internal steps; -1, with no step, for a frame that is not a positive finite time or when errors()
+	// is not empty.
 	int advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin = Spin());
 
 	// frame time not yet stepped: the world lags the frames by this much, less than one contact substep [s]
@@ -77,5 +91,6 @@ private:
 	ContactSubstepSettings m_settings;
 	std::vector<std::string> m_errors;
 	double m_owed_s = 0;
+	double m_clock_s = 0;  // the time the world has been stepped through this policy
 };
 }  // namespace plastic

@@ -161,6 +161,86 @@ TEST(SubstepPolicy, ABodySlidingPastAnotherClosesOnlyAlongTheNormal)
 	EXPECT_TRUE(s.near(0.0059));
 }
 
+TEST(SubstepPolicy, APairWithinTheSpeculativeReachCountsOnlyIfItCanMoveHalfTheReach)
+{
+	// a ball 50 um from a wall's face, sliding along it at 5 m/s: the 0.1 mm clearance covers the gap at any horizon
+	BallAndWall s(5e-5, 0.0);
+	s.ball->setLinearVelocity(btVector3(0, 5, 0));
+	const double clearance = 1e-4, reach = 3e-4;
+	auto near = [&](double horizon_s, double reach_m) {
+		return plastic::mayTouchWithin({s.ball.get()}, {s.wall.get()}, horizon_s, clearance, reach_m);
+	};
+	EXPECT_TRUE(near(1e-3, 0.0));
+	// with contacts made within 0.3 mm, it is left to them while it moves less than 0.15 mm against the wall
+	EXPECT_FALSE(near(1e-3, reach));
+	EXPECT_FALSE(near(1.0, reach));
+	// turned towards the wall at 0.1 m/s it closes 0.15 mm in 1.5 ms
+	s.ball->setLinearVelocity(btVector3(btScalar(0.1), 5, 0));
+	EXPECT_FALSE(near(1.4e-3, reach));
+	EXPECT_TRUE(near(1.6e-3, reach));
+	// spinning at 1 rad/s instead, its box's corner (0.1 sqrt 3 from its centre) moves 0.15 mm in 0.866 ms
+	s.ball->setLinearVelocity(btVector3(0, 5, 0));
+	s.ball->setAngularVelocity(btVector3(0, 0, 1));
+	EXPECT_FALSE(near(0.85e-3, reach));
+	EXPECT_TRUE(near(0.88e-3, reach));
+	// a pair farther than the reach is tested as without it: at 1 mm it arrives at 1 m/s within 0.9 ms (with the
+	// clearance)
+	BallAndWall far(1e-3, 1.0);
+	EXPECT_FALSE(plastic::mayTouchWithin({far.ball.get()}, {far.wall.get()}, 0.89e-3, clearance, reach));
+	EXPECT_TRUE(plastic::mayTouchWithin({far.ball.get()}, {far.wall.get()}, 0.91e-3, clearance, reach));
+}
+
+TEST(SubstepPolicy, AContactIsPressedWhileItCarriesAnImpulse)
+{
+	// a ball dropped onto a static floor, a static wall far away: in the air no contact of it is pressed; resting on
+	// the floor it is pressed against the floor and not against the wall
+	btDefaultCollisionConfiguration configuration;
+	btCollisionDispatcher dispatcher(&configuration);
+	btDbvtBroadphase broadphase;
+	btSequentialImpulseConstraintSolver solver;
+	btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
+	world.setGravity(btVector3(0, btScalar(-9.81), 0));
+	btBoxShape slabShape(btVector3(1, btScalar(0.1), 1));
+	btTransform t;
+	t.setIdentity();
+	t.setOrigin(btVector3(0, btScalar(-0.1), 0));
+	btRigidBody floor(0, nullptr, &slabShape);
+	floor.setWorldTransform(t);
+	world.addRigidBody(&floor);
+	t.setOrigin(btVector3(0, 5, 0));
+	btRigidBody wall(0, nullptr, &slabShape);
+	wall.setWorldTransform(t);
+	world.addRigidBody(&wall);
+	btSphereShape ballShape(btScalar(0.1));
+	btRigidBody ball(1, nullptr, &ballShape, btVector3(btScalar(0.004), btScalar(0.004), btScalar(0.004)));
+	t.setOrigin(btVector3(0, btScalar(0.15), 0));  // 50 mm above the floor
+	ball.setWorldTransform(t);
+	world.addRigidBody(&ball);
+	const std::vector<const btCollisionObject*> balls{&ball}, floors{&floor}, walls{&wall}, both{&floor, &wall};
+	world.stepSimulation(btScalar(1e-3), 0);
+	EXPECT_FALSE(plastic::pressedContact(dispatcher, balls, both));
+	int steps = 0;
+	while (!plastic::pressedContact(dispatcher, balls, both) && steps < 1000)
+	{
+		world.stepSimulation(btScalar(1e-3), 0);
+		steps++;
+	}
+	// it falls 50 mm (less the contact's margin) in about 101 ms
+	EXPECT_GT(steps, 90);
+	EXPECT_LT(steps, 110);
+	EXPECT_TRUE(plastic::pressedContact(dispatcher, balls, floors));
+	EXPECT_TRUE(plastic::pressedContact(dispatcher, floors, balls));
+	EXPECT_FALSE(plastic::pressedContact(dispatcher, balls, walls));
+	// thrown up, the ball leaves the floor: nothing is pressed once it is off
+	ball.setLinearVelocity(btVector3(0, 2, 0));
+	world.stepSimulation(btScalar(1e-3), 0);
+	world.stepSimulation(btScalar(1e-3), 0);
+	EXPECT_FALSE(plastic::pressedContact(dispatcher, balls, both));
+	world.removeRigidBody(&ball);
+	world.removeRigidBody(&wall);
+	world.removeRigidBody(&floor);
+}
+
 TEST(SubstepPolicy, OnlyThePartOfAFrameNearContactIsSubstepped)
 {
 	// 1/60 s frame, contact after 10 ms: the first ~10 ms go in a few halves, the rest in 1 ms steps
@@ -235,6 +315,37 @@ TEST(SubstepPolicy, InContactTheWorldStepsAtTheSubstepOnItsOwnClock)
 	double sum = 0;
 	for (double h : steps) sum += h;
 	EXPECT_NEAR(sum, 1e-4, 1e-18);
+}
+
+TEST(SubstepPolicy, AContactMetBetweenTicksIsSteppedToTheNextTickWhateverTheFrame)
+{
+	// a ball 12.34 mm from a wall, closing at 1 m/s, in 0.1 ms substeps: it is near from about 12.2 ms on. However the
+	// frames cut the approach, the steps in contact end on the multiples of 0.1 ms from the start, so the wall meets
+	// the ball at the same point of a substep
+	for (double frame_s : {1e-3, 7e-4, 1.0 / 60.0, 2.3e-4})
+	{
+		BallAndWall s(0.01234, 1.0);
+		plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{1e-4});
+		double time = 0;
+		int inContact = 0;
+		while (time < 0.02)
+		{
+			policy.advance(
+				frame_s, [&](double horizon) { return s.near(horizon); },
+				[&](double h) {
+					const bool near = s.near(h);
+					s.move(h);
+					time += h;
+					if (near)
+					{
+						inContact++;
+						const double ticks = time / 1e-4;
+						EXPECT_NEAR(ticks, std::round(ticks), 1e-6) << frame_s << " s frames: a step in contact ends at " << time;
+					}
+				});
+		}
+		EXPECT_GT(inContact, 70) << frame_s;  // 12.2 ms to 20 ms in 0.1 ms substeps
+	}
 }
 
 TEST(SubstepPolicy, WhatIsOwedIsSteppedWithTheNextFrameOnceContactEnds)
