@@ -343,8 +343,9 @@ reaches an anvil within a step stops at its face, and no position correction thr
 what closes within the contact breaking threshold (0.3 mm for the specimen's boxes) in a step (the hammer
 closes 0.13 mm in 0.03 ms at 4.4 m/s, 0.26 mm in 0.06 ms). In contact the world steps at the contact substep on
 a clock of its own, and what is left of a frame, less than a substep, is owed to the next frame (as upstream's
-fixed-step `stepSimulation` lags its frames), so the frame step does not change the steps the contacts see: a
-column of these tables differs from the next only by the steps before and after the contact. What is left grows
+fixed-step `stepSimulation` lags its frames); its ticks are the multiples of the substep, reached from a step out
+of contact in one or two steps of at least half a substep, so a column of these tables differs from the next only by
+the steps before the first tick and after the contact. What is left grows
 with the step: in a step the
 linearised contacts of a half squeezed between the striker's corner and an anvil's edge take away a little of
 the velocity along their normals, and the loss is above the converged one (other losses 0.5 / 1.6 / 5.1 J at

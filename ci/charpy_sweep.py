@@ -33,8 +33,8 @@ DIRECT_SUBSTEP_S = [1e-5, 5e-5, 1e-4, 0]
 # what the hammer closes within the contacts' reach (0.3 mm at 4.4 m/s: 68 us), and 0.1 ms (one step per 0.1 ms frame:
 # the only substep that keeps the whole test within 100 internal steps at 0.1 ms frames)
 SPECULATIVE_SUBSTEP_S = [1e-5, 3e-5, 6e-5, 1e-4]
-# and at 1 ms frames only, the substeps between (the frame step does not change the steps the contacts see: the world
-# steps at the substep on its own clock): how the loss moves with the substep, not only at the chosen ones
+# and at 1 ms frames only, the substeps between (the frame step changes only the steps before the contacts' first
+# tick: the world steps at the substep on its own clock): how the loss moves with the substep, not only at the chosen ones
 LANDSCAPE_SUBSTEP_S = [4e-5, 5e-5, 7e-5, 8e-5, 9e-5, 1.1e-4, 1.2e-4]
 LANDSCAPE_DT_MS = 1
 # each plastic method's converged run, the reference of the discretisation errors: direct solve, speculative contacts,

@@ -100,7 +100,8 @@ private:
 	void createJoints();
 	void createHammer();
 	// whether a part can touch an anvil or the hammer within horizon_s (plastic::mayTouchWithin); with speculative
-	// contacts, a part within their reach counts only while it is pressed or can move half the reach
+	// contacts, a part within their reach counts only while it is pressed against an anvil or can move half the
+	// reach, or a joint works
 	bool nearContact(double horizon_s) const;
 	double fastestSpin_rad_s() const;  // of the specimen's parts
 	void internalStep(double h_s);
@@ -121,7 +122,7 @@ private:
 	btTypedConstraint* m_middleJoint = nullptr;
 
 	double m_time_s = 0;
-	bool m_jointsWorking = false;     // a joint flowed in the last step, or holds elastic energy
+	bool m_jointsWorking = true;      // a joint flowed in the last step, or holds elastic energy (or no step yet)
 	double m_jointRotation_rad = 0;   // the joints' plastic rotation after the last step
 	long m_internalSteps = 0;
 	double m_lastFrameStep_s = 0;

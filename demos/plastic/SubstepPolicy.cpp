@@ -87,7 +87,8 @@ struct Reach
 // the normal between them. The shapes' gap along a fixed direction n bounds their distance from below; translated,
 // the mover changes it by its velocity along n times the time, and its spin and the accelerations move none of its
 // points more than reach.fixed. A body sliding past another closes nothing. With speculative contacts, a pair within
-// their reach counts only if it can move more than half the reach against the other within the horizon.
+// their reach counts only if it can move more than half the reach against the other within the horizon; a pair that
+// touches or overlaps is left to its contacts as well (whether they carry load is pressedContact's to tell).
 bool within(const Piece& mover, const Piece& other, const Reach& reach)
 {
 	const btScalar grow = reach.grow;
@@ -302,21 +303,24 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 				// in or near contact the world keeps a clock of its own, in steps of the contact substep: a rest of
 				// the frame shorter than one is owed to the next frame (the world then lags the frame by less than a
 				// substep, as in upstream's fixed-step stepSimulation), so no frame step cuts a short step into the
-				// contacts; a rest that is a whole number of substeps is taken in equal steps
+				// contacts; a rest that is a whole number of substeps is taken in equal steps.
 				// The clock's ticks are the multiples of the substep from the policy's start, whatever steps the frames
-				// took out of contact: a contact that begins between two ticks is met by the step to the next one, so
-				// the frame step does not move the phase of an impact within the substeps.
-				const double sinceTick = std::fmod(m_clock_s, h);
-				const double toTick = sinceTick > 1e-6 * h && h - sinceTick > 1e-6 * h ? h - sinceTick : 0;
+				// took out of contact: a contact that begins between two ticks is met by the steps to the next one, so
+				// the frame step does not move the phase of an impact within the substeps. Those are one step, or two
+				// equal ones where one would be shorter than half a substep: a step of a few microseconds after a long
+				// one gave a Charpy specimen's contacts the impulses of the long one (423 J made on a 365 J test).
+				const double sinceTick = m_phase_s > 1e-6 * h && h - m_phase_s > 1e-6 * h ? m_phase_s : 0;
+				const double toTick = sinceTick > 0 ? h - sinceTick : 0;
 				const double whole = std::round(remaining / h);
 				if (toTick > 0)
 				{
-					if (toTick > remaining + 1e-12 * frame_s)
+					const double alignment = toTick >= h / 2 ? toTick : (toTick + h) / 2;
+					if (alignment > remaining + 1e-12 * frame_s)
 					{
 						m_owed_s = remaining;
 						break;
 					}
-					piece = toTick;
+					piece = alignment;
 				}
 				else if (whole >= 1 && std::fabs(remaining - whole * h) <= 1e-9 * remaining)
 				{
@@ -350,7 +354,10 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 		step(piece);
 		steps++;
 		remaining -= piece;
-		m_clock_s += piece;
+		if (h > 0)
+		{
+			m_phase_s = std::fmod(m_phase_s + piece, h);
+		}
 	}
 	return steps;
 }

@@ -72,13 +72,13 @@ public:
 	// Advances one frame: the part of the frame that reaches no contact within its own length is one step (or a
 	// few halves); in or near contact the world steps at contact_substep_s on a clock of its own, whose ticks are the
 	// multiples of contact_substep_s from the policy's start (a contact met between two ticks is stepped to the next
-	// one first), and what is left of the frame, less than a substep, is owed to the next frame (owed_s; as upstream's
-	// fixed-step stepSimulation lags its frames), so the frame step does not change the steps the contacts see, nor
-	// the phase of an impact within them. A rest of the frame that is a whole number of substeps is taken in that many
-	// equal steps. Out of contact, what is owed is stepped with the frame, and, given `spin`, a step is cut so that it
-	// turns no body more than max_turn_per_step_rad. The contact test is made again after every internal step. Returns
-	// the number of internal steps; -1, with no step, for a frame that is not a positive finite time or when errors()
-	// is not empty.
+	// one first, in one step or two of at least half a substep), and what is left of the frame, less than a substep,
+	// is owed to the next frame (owed_s; as upstream's fixed-step stepSimulation lags its frames), so the frame step
+	// changes the steps the contacts see only up to the first tick, and not the phase of an impact within them. A rest
+	// of the frame that is a whole number of substeps is taken in that many equal steps. Out of contact, what is owed
+	// is stepped with the frame, and, given `spin`, a step is cut so that it turns no body more than
+	// max_turn_per_step_rad. The contact test is made again after every internal step. Returns the number of internal
+	// steps; -1, with no step, for a frame that is not a positive finite time or when errors() is not empty.
 	int advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin = Spin());
 
 	// frame time not yet stepped: the world lags the frames by this much, less than one contact substep [s]
@@ -91,6 +91,6 @@ private:
 	ContactSubstepSettings m_settings;
 	std::vector<std::string> m_errors;
 	double m_owed_s = 0;
-	double m_clock_s = 0;  // the time the world has been stepped through this policy
+	double m_phase_s = 0;  // the time the world has been stepped through this policy, modulo the contact substep
 };
 }  // namespace plastic

@@ -119,11 +119,11 @@ TEST(CharpyDirectSolve, AtCoarseStepsTheLossIsNoMoreThanTheBookedWorkExplainsAnd
 // nose are boxes, which get contacts before they overlap (within the contact breaking threshold, 0.3 mm here), so at
 // contact steps over which the hammer closes well within that (4.4 m/s x 30 us = 0.13 mm) no half sinks into an
 // anvil. The reference is the same scene converged: 2 us contact steps, checked against the sequential-impulse solver
-// at 2 us (129.1 J both, measured). In contact the world steps at the contact substep on a clock of its own
-// (plastic::ContactSubstepPolicy), so the frame step does not change the steps: measured (build/bin/charpy
-// --solver=direct --speculative-contacts --contact-substep=S --dt=F, frames from 0.1 ms to 1/60 s) +0.3 % at 10 us in
-// 262-281 internal steps, +1.2 % at 30 us in 88-94, +2.3 % at 60 us in 46-48, +4.3 to +4.4 % at 100 us in 31-48; the
-// frame step moves the loss by at most 0.05 %. At 100 us, frames of 0.5 ms and more take 42-48 steps where 0.1 ms
+// at 2 us (129.1 J both, measured). In contact the world steps at the contact substep on a clock of its own whose
+// ticks are the multiples of the substep (plastic::ContactSubstepPolicy), so the frame step changes only the steps
+// before the first tick: measured (build/bin/charpy --solver=direct --speculative-contacts --contact-substep=S --dt=F,
+// frames from 0.1 ms to 1/60 s) +0.2 to +0.3 % at 10 us in 212-262 internal steps, +1.2 % at 30 us in 75-88, +2.3 % at
+// 60 us in 39-48, +4.3 % at 100 us in 32-44; the frame step moves the loss by at most 0.05 %. At 100 us, frames of 0.5 ms and more take 42-48 steps where 0.1 ms
 // frames take 32: the halves leave the anvils slowly, and the clear end (no half can touch an anvil within a frame)
 // comes later with longer frames. The substeps between are as good since patch 0038 (btDirectJointSolver corrects the
 // contacts' penetration without momentum): +1.3 to +4.0 % at 40-90 us, where at 70 and 90 us the halves pinched
