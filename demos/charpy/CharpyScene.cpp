@@ -508,9 +508,8 @@ bool CharpyScene::nearContact(double horizon_s) const
 	// ms: left to the speculative contacts, these steps are no longer substeps. The substep holds while a part is
 	// pressed against an anvil (the bending), while the hammer comes at the specimen (its gap is past the reach), and
 	// while a joint flows or holds elastic energy (a longer step would change what it books: an elastic-plastic joint
-	// still ringing booked 5.3 J of flow in one 86 us step). Before the first step no contact has told its load: the
-	// specimen lying on the anvils made 0.07-0.15 J in a first step of 0.5 ms.
-	return m_jointsWorking || plastic::pressedContact(*m_world->getDispatcher(), m_contactMovers, m_contactAnvils) ||
+	// still ringing booked 5.3 J of flow in one 86 us step); both are known after each step (m_holdSubstep).
+	return m_holdSubstep ||
 		   plastic::mayTouchWithin(m_contactMovers, m_contactOthers, horizon_s, nearClearance_m(m_parameters), speculativeReach_m());
 }
 
@@ -544,15 +543,20 @@ void CharpyScene::internalStep(double h_s)
 	}
 	m_time_s += h_s;
 	m_internalSteps++;
-	// the joints work while they flow or hold elastic energy: a longer step would change what they book
-	double rotation = 0, elastic = 0;
-	for (const plastic::Joint& joint : m_impl->joints)
+	if (m_parameters.speculative_contacts)
 	{
-		rotation += joint.plasticRotation_rad();
-		elastic += joint.elasticEnergy_j();
+		// what nearContact holds the substep for, from this step: a joint flowed or holds elastic energy, or a part
+		// was pressed against an anvil
+		double rotation = 0, elastic = 0;
+		for (const plastic::Joint& joint : m_impl->joints)
+		{
+			rotation += joint.plasticRotation_rad();
+			elastic += joint.elasticEnergy_j();
+		}
+		m_holdSubstep = rotation != m_jointRotation_rad || elastic > 0 ||
+						plastic::pressedContact(*m_world->getDispatcher(), m_contactMovers, m_contactAnvils);
+		m_jointRotation_rad = rotation;
 	}
-	m_jointsWorking = rotation != m_jointRotation_rad || elastic > 0;
-	m_jointRotation_rad = rotation;
 	trackAfterStep(h_s);
 }
 

@@ -309,8 +309,7 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 				// the frame step does not move the phase of an impact within the substeps. Those are one step, or two
 				// equal ones where one would be shorter than half a substep: a step of a few microseconds after a long
 				// one gave a Charpy specimen's contacts the impulses of the long one (423 J made on a 365 J test).
-				const double sinceTick = m_phase_s > 1e-6 * h && h - m_phase_s > 1e-6 * h ? m_phase_s : 0;
-				const double toTick = sinceTick > 0 ? h - sinceTick : 0;
+				const double toTick = m_phase_s > 1e-6 * h && h - m_phase_s > 1e-6 * h ? h - m_phase_s : 0;
 				const double whole = std::round(remaining / h);
 				if (toTick > 0)
 				{
