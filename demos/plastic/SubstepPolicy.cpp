@@ -80,15 +80,56 @@ struct Reach
 	btScalar horizon;
 	btScalar clearance;
 	btScalar speculativeReach;  // 0: no speculative contacts
+	btVector3 centre;           // the mover's centre of mass
+	btVector3 spin;             // the mover's spin in the other's frame [rad/s]
+	btScalar acceleration;      // the difference of their gravity and the other's frame's acceleration [m/s^2]
 };
+
+// How far a box mover's points can come towards the plane through `onOther` with normal n (from the other towards the
+// mover) within the horizon, each vertex on its own: a box's points nearest to a plane after a rigid motion are among
+// its vertices, and a vertex q moves along n by its velocity in the other's frame, v + w x (q - c), times the time,
+// plus at most 1/2 (a + |w|^2 |q - c|) t^2 (its turn's second order and the accelerations). A convex other lies behind
+// the plane through its support point along n, so no point of the mover reaches it before crossing that plane. The
+// pair counts as near if a vertex already within the speculative reach moves more than half of it towards the plane, or
+// a vertex past the reach can cross its way to the plane (with the clearance). A part lying on the hammer's nose, or
+// turning about its contact with it, has its far vertices moving along the plane or away from it, which the bound of
+// its spin at its farthest corner counted as closing. The first-order term bounds the turn's only while the body turns
+// less than half a revolution: returns -1 for a longer horizon, and for a mover that is not a box (the caller falls
+// back to the bound of the spin at the farthest corner).
+int boxVerticesNear(const Piece& mover, const btVector3& n, const btVector3& onOther, const Reach& reach)
+{
+	const btScalar h = reach.horizon;
+	const btScalar spin2 = reach.spin.length2();
+	if (!mover.shape || mover.shape->getShapeType() != BOX_SHAPE_PROXYTYPE || spin2 * h * h > SIMD_PI * SIMD_PI / 4)
+	{
+		return -1;
+	}
+	const btBoxShape* box = static_cast<const btBoxShape*>(mover.shape);
+	for (int i = 0; i < 8; i++)
+	{
+		btVector3 vertex;
+		box->getVertex(i, vertex);
+		const btVector3 q = mover.transform(vertex);
+		const btVector3 r = q - reach.centre;
+		const btScalar height = n.dot(q - onOther);
+		const btScalar along = (reach.velocity + reach.spin.cross(r)).dot(n);
+		const btScalar moves = btMax(btScalar(0), -along) * h + btScalar(0.5) * (reach.acceleration + spin2 * r.length()) * h * h;
+		if (height <= reach.speculativeReach ? moves > reach.speculativeReach / 2 : moves + reach.clearance >= height)
+		{
+			return 1;
+		}
+	}
+	return 0;
+}
 
 // whether two pieces can touch within the horizon: their boxes overlap (the mover's grown by reach.grow) and, when both
 // are convex, the distance between their shapes (GJK; 0 when they overlap) is at most what the mover can close along
 // the normal between them. The shapes' gap along a fixed direction n bounds their distance from below; translated,
 // the mover changes it by its velocity along n times the time, and its spin and the accelerations move none of its
-// points more than reach.fixed. A body sliding past another closes nothing. With speculative contacts, a pair within
-// their reach counts only if it can move more than half the reach against the other within the horizon; a pair that
-// touches or overlaps is left to its contacts as well (whether they carry load is pressedContact's to tell).
+// points more than reach.fixed. A body sliding past another closes nothing. With speculative contacts, a box mover's
+// vertices are taken one by one against the plane that separates the other (boxVerticesNear); another mover's pair
+// within their reach counts only if it can move more than half the reach against the other within the horizon. A pair
+// that touches or overlaps is left to its contacts as well (whether they carry load is pressedContact's to tell).
 bool within(const Piece& mover, const Piece& other, const Reach& reach)
 {
 	const btScalar grow = reach.grow;
@@ -123,9 +164,17 @@ bool within(const Piece& mover, const Piece& other, const Reach& reach)
 	const btScalar alongNormal = n.dot(moverNearest) - n.dot(otherNearest);
 	const btScalar closes = reach.fixed + btMax(btScalar(0), -reach.velocity.dot(n)) * reach.horizon;
 	const btScalar distance = btMin(closest.m_distance, alongNormal);
-	if (reach.speculativeReach > 0 && distance <= reach.speculativeReach)
+	if (reach.speculativeReach > 0)
 	{
-		return closes - reach.clearance > reach.speculativeReach / 2;
+		const int vertices = boxVerticesNear(mover, n, otherNearest, reach);
+		if (vertices >= 0)
+		{
+			return vertices == 1;
+		}
+		if (distance <= reach.speculativeReach)
+		{
+			return closes - reach.clearance > reach.speculativeReach / 2;
+		}
 	}
 	return distance <= btMin(grow, closes);
 }
@@ -148,7 +197,7 @@ namespace
 // centre of mass). A ball 0.7 m from the centre of a wall turning at 2 rad/s slides along its face, closing nothing
 // along the normal, and the wall's end sweeps into it after 0.64 s.
 void relativeMotion(const btCollisionObject* mover, const btCollisionObject* other, btVector3& velocity, double& spinSpeed_m_s,
-					double& frameAcceleration_m_s2)
+					double& frameAcceleration_m_s2, btVector3* relativeSpin = nullptr, btVector3* moverCentre = nullptr)
 {
 	const btRigidBody* m = movingBody(mover);
 	const btRigidBody* o = movingBody(other);
@@ -174,6 +223,14 @@ void relativeMotion(const btCollisionObject* mover, const btCollisionObject* oth
 		frameAcceleration_m_s2 = double(w.length()) * (2 * double(velocity.length()) + double(w.length()) * double(arm.length()));
 	}
 	spinSpeed_m_s = double(spin.length()) * reach;
+	if (relativeSpin)
+	{
+		*relativeSpin = spin;
+	}
+	if (moverCentre)
+	{
+		*moverCentre = centre;
+	}
 }
 }  // namespace
 
@@ -203,7 +260,7 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 			}
 			Reach reach;
 			double spinSpeed_m_s, frameAcceleration_m_s2;
-			relativeMotion(mover, other, reach.velocity, spinSpeed_m_s, frameAcceleration_m_s2);
+			relativeMotion(mover, other, reach.velocity, spinSpeed_m_s, frameAcceleration_m_s2, &reach.spin, &reach.centre);
 			const double acceleration_m_s2 = relativeGravity_m_s2(mover, other) + frameAcceleration_m_s2;
 			const double fixed_m = spinSpeed_m_s * horizon_s + 0.5 * acceleration_m_s2 * horizon_s * horizon_s + clearance_m;
 			reach.grow = btScalar(double(reach.velocity.length()) * horizon_s + fixed_m);
@@ -211,6 +268,7 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 			reach.horizon = btScalar(horizon_s);
 			reach.clearance = btScalar(clearance_m);
 			reach.speculativeReach = btScalar(speculativeReach_m);
+			reach.acceleration = btScalar(acceleration_m_s2);
 			const int numMover = pieces(mover, reach.grow, mine, kCapacity);
 			for (int i = 0; i < numMover; i++)
 			{
