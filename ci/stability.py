@@ -59,6 +59,10 @@ CASES = {
     "direct-parts8": ("8 parts, direct solver", ["--solver=direct", "--parts=8"]),
     "direct-parts16": ("16 parts, direct solver", ["--solver=direct", "--parts=16"]),
     "direct-parts32": ("32 parts, direct solver", ["--solver=direct", "--parts=32"]),
+    # Bullet's own continuous collision detection on the parts (the hammer, a compound, cannot have it)
+    "ccd-dt1ms-nosub": ("frame step 1 ms, no contact substeps, Bullet's CCD on the parts",
+                        ["--dt=1e-3", "--contact-substep=0", "--ccd-motion-threshold=1e-3", "--ccd-swept-radius=4e-3"]),
+    "ccd-parts32": ("32 parts, Bullet's CCD on the parts", ["--parts=32", "--ccd-motion-threshold=1e-4", "--ccd-swept-radius=5e-4"]),
     # the direct solver with speculative box-box contacts (patch 0036)
     "direct-spec": ("default scene, direct solver, speculative contacts", ["--solver=direct", "--speculative-contacts"]),
     "direct-spec-sub0.06ms-dt16.7ms": ("frame step 1/60 s, contact substep 0.06 ms, direct solver, speculative contacts",
@@ -81,7 +85,7 @@ CONVERGED_TOLERANCE = 0.05  # a stable run's loss more than 5 % from the converg
 
 # cases that change only the numerics (step, substeps, parts, iterations, stiffness of rigid-plastic joints,
 # precision): the same specimen and impact, so the same converged loss as the default case
-NUMERIC_PREFIXES = ("dt", "parts", "it", "stiff-E", "double", "direct")
+NUMERIC_PREFIXES = ("dt", "parts", "it", "stiff-E", "double", "direct", "ccd")
 
 
 def reference_case(case):
@@ -117,8 +121,8 @@ def configurations(case_names, double_runner):
         table = DOUBLE_CASES if case in DOUBLE_CASES else CASES
         what, flags = table[case]
         # the direct solver's cases are issue 25's cells: the plastic methods (a chain of 32 brittle joints takes it
-        # 60-80 ms a step, which the matrix does not wait for)
-        for method in (METHODS[4:] if case.startswith("direct") else METHODS):
+        # 60-80 ms a step, which the matrix does not wait for); the CCD cases measure Bullet's CCD for the same methods
+        for method in (METHODS[4:] if case.startswith(("direct", "ccd")) else METHODS):
             # the whole duration: a run may blow up after the specimen has passed the anvils
             c = {"key": f"{case}/{method}", "case": case, "method": method, "flags": [f"--method={method}", "--full-duration"] + flags}
             if case in DOUBLE_CASES:
@@ -179,6 +183,25 @@ def write_markdown(rows, case_names, path, command):
                       "since they book only what they did at their cap."]
     else:
         lines.append("None.")
+    ccd = [c for c in case_names if c.startswith("ccd-")]
+    if ccd:
+        lines += ["", "Cases starting with ccd are the same runs with Bullet's own continuous collision detection on the",
+                  "specimen's parts (`--ccd-motion-threshold`, `--ccd-swept-radius`: a part whose centre moves more than",
+                  "the threshold in a step is swept as a sphere from its centre, stopped where it would hit, and given",
+                  "a predictive contact). The hammer cannot have it: Bullet sweeps convex shapes only, and the hammer",
+                  "is a compound. Each cell against the same case without CCD:", ""]
+        for case in ccd:
+            plain = case[len("ccd-"):]
+            pairs = []
+            for m in METHODS[4:]:
+                a, b = by_key.get(f"{case}/{m}"), by_key.get(f"{plain}/{m}")
+                if not a or not b or a.get("failure") or b.get("failure"):
+                    continue
+                same = (a.get("energy_loss_J") == b.get("energy_loss_J") and a.get("plastic_work_J") == b.get("plastic_work_J")
+                        and a.get("steps") == b.get("steps"))
+                pairs.append(f"{m} {float(a['energy_loss_J']):.2f} J against {float(b['energy_loss_J']):.2f} J"
+                             + (" (the same steps, loss and plastic work)" if same else ""))
+            lines.append(f"- `{case}` ({' '.join(CASES[case][1][-2:])}): " + ("; ".join(pairs) if pairs else "no pair run") + ".")
     if any(c.startswith("direct") for c in case_names):
         lines += ["", "Cases starting with direct are the same runs with `--solver=direct` (btDirectJointSolver, patch",
                   "0019), which solves the specimen's joints and its contacts with the hammer and the anvils in one",

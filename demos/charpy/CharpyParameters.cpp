@@ -68,6 +68,11 @@ std::vector<std::string> validateCharpyParameters(const CharpyParameters& p)
 	{
 		scene::requireRange(errors, "contact-substep", p.contact_substep_s, 1e-7, 0.05, "s (or 0 = off)");
 	}
+	if (p.ccd_motion_threshold_m != 0)
+	{
+		scene::requireRange(errors, "ccd-motion-threshold", p.ccd_motion_threshold_m, 1e-7, 1, "m (or 0 = off)");
+	}
+	scene::requireRange(errors, "ccd-swept-radius", p.ccd_swept_sphere_radius_m, 0, 1, "m");
 	if (p.solver_iterations < 1 || p.solver_iterations > 10000)
 	{
 		errors.push_back("iterations: " + std::to_string(p.solver_iterations) + " is not in [1, 10000]");

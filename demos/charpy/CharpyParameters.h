@@ -62,6 +62,12 @@ struct CharpyParameters
 	// flat nose) get contacts before they overlap, within the contact breaking threshold, so a part that meets a face
 	// within a step stops at it instead of sinking in and being pushed out by the contacts' position correction
 	bool speculative_contacts = false;
+	// Bullet's own continuous collision detection on the specimen's parts (btCollisionObject::setCcdMotionThreshold and
+	// setCcdSweptSphereRadius): a part whose centre moves more than the threshold in a step is swept as a sphere of that
+	// radius from its centre, stopped where the sphere would hit, and given a predictive contact there. 0 = off. The
+	// hammer gets none: Bullet sweeps convex shapes only, and the hammer is a compound of its arm, head and striker.
+	double ccd_motion_threshold_m = 0.0;
+	double ccd_swept_sphere_radius_m = 0.0;
 	double duration_s = 0.06;            // simulated time after the hammer is placed just before impact
 	// runCharpy ends the test before duration_s once the specimen is clear (CharpyScene::clear: every part behind the
 	// anvils and none able to touch an anvil within a frame). The parts may still meet the hammer after that (the

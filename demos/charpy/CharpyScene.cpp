@@ -183,6 +183,11 @@ CharpyScene::CharpyScene(const CharpyParameters& parameters)
 	{
 		m_contactOthers.push_back(m_hammer);
 	}
+	for (btRigidBody* part : m_parts)
+	{
+		part->setCcdMotionThreshold(btScalar(parameters.ccd_motion_threshold_m));
+		part->setCcdSweptSphereRadius(btScalar(parameters.ccd_swept_sphere_radius_m));
+	}
 	m_initialEnergy_j = energies().total_j;
 	m_previousBend_rad = bendAngle_rad();
 }
