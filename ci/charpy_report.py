@@ -261,7 +261,7 @@ Machine: {machine()}. **Timings are from a shared 2-core machine**: compare them
 
 Error = (energy loss - analytic) / analytic, analytic = Mp * theta_pass = {fmt(analytic, '{:.2f}')} J (friction 0).
 Frame step = `--dt`; contact substep = the internal step while the specimen is in or near contact
-(`--contact-substep`, default 0.01 ms; 0 = off); auto = `--auto-dt` (coarse 5 ms steps away from contact).
+(`--contact-substep`, default 0.01 ms; 0 = off); auto = `--auto-dt` (frames of 5 ms, or the longest of its halves, that reach no contact).
 
 ![error against run time](charpy-error-vs-runtime.png)
 

@@ -22,7 +22,7 @@ const scene::Flags<CharpyParameters>& valueFlags()
 					"NAME  constraint solver: sequential-impulse (upstream; default), direct (btDirectJointSolver, patch 0019: "
 					"the specimen's joints and contacts solved together), dantzig, pgs (btMLCPSolver)"}},
 		{"dt", numberFlag(&CharpyParameters::dt_s, "SECONDS  frame step, default 1e-4")},
-		{"auto-dt-coarse", numberFlag(&CharpyParameters::auto_dt_coarse_s, "SECONDS  step far from contact with --auto-dt, default 5e-3")},
+		{"auto-dt-coarse", numberFlag(&CharpyParameters::auto_dt_coarse_s, "SECONDS  frame far from contact with --auto-dt (or the longest of its halves that reaches none), default 5e-3")},
 		{"contact-substep", numberFlag(&CharpyParameters::contact_substep_s, "SECONDS  internal step in/near contact, 0 = off, default 1e-5")},
 		{"ccd-motion-threshold", numberFlag(&CharpyParameters::ccd_motion_threshold_m,
 											"M  Bullet's CCD on the specimen's parts: sweep a part moving more than this in a step, 0 = off (default)")},

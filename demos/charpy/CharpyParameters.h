@@ -49,7 +49,8 @@ struct CharpyParameters
 
 	// stepping
 	double dt_s = 1e-4;                  // frame step
-	bool auto_dt = false;                // coarse steps (auto_dt_coarse_s) away from contact, dt_s near it
+	bool auto_dt = false;                // frames of auto_dt_coarse_s, or the longest of its halves, that reach no
+	                                     // contact; dt_s near it
 	double auto_dt_coarse_s = 5e-3;
 	double contact_substep_s = 1e-5;     // internal step while the specimen is in or near contact; 0 = off
 	                                     // (1e-5: the loss has converged; 2e-5 varies 127-136 J with the frame step)

@@ -522,11 +522,21 @@ void CharpyScene::step()
 {
 	const CharpyParameters& p = m_parameters;
 	double frame = p.dt_s;
-	if (p.auto_dt && p.auto_dt_coarse_s > frame && !nearContact(p.auto_dt_coarse_s))
+	if (p.auto_dt)
 	{
-		// a coarse frame the scene chose itself ends at the duration, not past it (a frame of dt_s may, as every
-		// frame of a fixed frame step does)
-		frame = std::max(frame, std::min(p.auto_dt_coarse_s, p.duration_s - m_time_s - m_substeps.owed_s()));
+		// the longest of the coarse frame and its halves that reaches no contact: after the fold the halves ride on
+		// the hammer's nose for 5-10 ms, near it within a coarse frame but not within a millisecond
+		double coarse = p.auto_dt_coarse_s;
+		while (coarse > frame && nearContact(coarse))
+		{
+			coarse /= 2;
+		}
+		if (coarse > frame)
+		{
+			// a coarse frame the scene chose itself ends at the duration, not past it (a frame of dt_s may, as every
+			// frame of a fixed frame step does)
+			frame = std::max(frame, std::min(coarse, p.duration_s - m_time_s - m_substeps.owed_s()));
+		}
 	}
 	m_substeps.advance(
 		frame, [this](double horizon_s) { return nearContact(horizon_s); }, [this](double h_s) { internalStep(h_s); },
