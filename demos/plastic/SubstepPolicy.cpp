@@ -81,29 +81,34 @@ struct Reach
 	btScalar clearance;
 	btScalar speculativeReach;  // 0: no speculative contacts
 	btVector3 centre;           // the mover's centre of mass
-	btVector3 spin;             // the mover's spin in the other's frame [rad/s]
+	btVector3 spin;             // the mover's spin in the other's frame, w_m - w_o [rad/s]
+	btVector3 otherSpin;        // the other's spin w_o [rad/s]
 	btScalar acceleration;      // the difference of their gravity and the other's frame's acceleration [m/s^2]
 };
 
 // How far a box mover's points can come towards the plane through `onOther` with normal n (from the other towards the
 // mover) within the horizon, each vertex on its own: a box's points nearest to a plane after a rigid motion are among
 // its vertices, and a vertex q moves along n by its velocity in the other's frame, v + w x (q - c), times the time,
-// plus at most 1/2 (a + |w|^2 |q - c|) t^2 (its turn's second order and the accelerations). A convex other lies behind
+// plus at most 1/2 (a + (|w|^2 + |w x w_o|) |q - c|) t^2: the accelerations, and the turn's second order, in which
+// the relative spin w = w_m - w_o, fixed in the world, turns in the other's frame at w_o (an angular acceleration
+// w x w_o there). A convex other lies behind
 // the plane through its support point along n, so no point of the mover reaches it before crossing that plane. The
 // pair counts as near if a vertex already within the speculative reach moves more than half of it towards the plane, or
 // a vertex past the reach can cross its way to the plane (with the clearance). A part lying on the hammer's nose, or
 // turning about its contact with it, has its far vertices moving along the plane or away from it, which the bound of
-// its spin at its farthest corner counted as closing. The first-order term bounds the turn's only while the body turns
-// less than half a revolution: returns -1 for a longer horizon, and for a mover that is not a box (the caller falls
-// back to the bound of the spin at the farthest corner).
+// its spin at its farthest corner counted as closing. The second-order expansion is kept to horizons in which the
+// bodies turn less than a quarter revolution (|w| + |w_o|) t < pi / 2: returns -1 for a longer horizon, and for a mover
+// that is not a box (the caller falls back to the bound of the spin at the farthest corner, an arc length that holds
+// at any angle).
 int boxVerticesNear(const Piece& mover, const btVector3& n, const btVector3& onOther, const Reach& reach)
 {
 	const btScalar h = reach.horizon;
-	const btScalar spin2 = reach.spin.length2();
-	if (!mover.shape || mover.shape->getShapeType() != BOX_SHAPE_PROXYTYPE || spin2 * h * h > SIMD_PI * SIMD_PI / 4)
+	const btScalar turn = (reach.spin.length() + reach.otherSpin.length()) * h;
+	if (!mover.shape || mover.shape->getShapeType() != BOX_SHAPE_PROXYTYPE || !(turn < SIMD_HALF_PI))
 	{
 		return -1;
 	}
+	const btScalar curvature = reach.spin.length2() + reach.spin.cross(reach.otherSpin).length();
 	const btBoxShape* box = static_cast<const btBoxShape*>(mover.shape);
 	for (int i = 0; i < 8; i++)
 	{
@@ -113,7 +118,7 @@ int boxVerticesNear(const Piece& mover, const btVector3& n, const btVector3& onO
 		const btVector3 r = q - reach.centre;
 		const btScalar height = n.dot(q - onOther);
 		const btScalar along = (reach.velocity + reach.spin.cross(r)).dot(n);
-		const btScalar moves = btMax(btScalar(0), -along) * h + btScalar(0.5) * (reach.acceleration + spin2 * r.length()) * h * h;
+		const btScalar moves = btMax(btScalar(0), -along) * h + btScalar(0.5) * (reach.acceleration + curvature * r.length()) * h * h;
 		if (height <= reach.speculativeReach ? moves > reach.speculativeReach / 2 : moves + reach.clearance >= height)
 		{
 			return 1;
@@ -197,7 +202,8 @@ namespace
 // centre of mass). A ball 0.7 m from the centre of a wall turning at 2 rad/s slides along its face, closing nothing
 // along the normal, and the wall's end sweeps into it after 0.64 s.
 void relativeMotion(const btCollisionObject* mover, const btCollisionObject* other, btVector3& velocity, double& spinSpeed_m_s,
-					double& frameAcceleration_m_s2, btVector3* relativeSpin = nullptr, btVector3* moverCentre = nullptr)
+					double& frameAcceleration_m_s2, btVector3* relativeSpin = nullptr, btVector3* moverCentre = nullptr,
+					btVector3* otherSpin = nullptr)
 {
 	const btRigidBody* m = movingBody(mover);
 	const btRigidBody* o = movingBody(other);
@@ -231,6 +237,10 @@ void relativeMotion(const btCollisionObject* mover, const btCollisionObject* oth
 	{
 		*moverCentre = centre;
 	}
+	if (otherSpin)
+	{
+		*otherSpin = o ? o->getAngularVelocity() : btVector3(0, 0, 0);
+	}
 }
 }  // namespace
 
@@ -260,7 +270,7 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 			}
 			Reach reach;
 			double spinSpeed_m_s, frameAcceleration_m_s2;
-			relativeMotion(mover, other, reach.velocity, spinSpeed_m_s, frameAcceleration_m_s2, &reach.spin, &reach.centre);
+			relativeMotion(mover, other, reach.velocity, spinSpeed_m_s, frameAcceleration_m_s2, &reach.spin, &reach.centre, &reach.otherSpin);
 			const double acceleration_m_s2 = relativeGravity_m_s2(mover, other) + frameAcceleration_m_s2;
 			const double fixed_m = spinSpeed_m_s * horizon_s + 0.5 * acceleration_m_s2 * horizon_s * horizon_s + clearance_m;
 			reach.grow = btScalar(double(reach.velocity.length()) * horizon_s + fixed_m);

@@ -40,10 +40,11 @@ double relativeGravity_m_s2(const btCollisionObject* mover, const btCollisionObj
 // as it slides. Whether such a pair's contacts carry load is not seen here (pressedContact). A box mover is then taken
 // vertex by vertex: the other (each convex piece of it) lies behind the plane through its nearest point normal to n,
 // and each vertex comes towards that plane by its own velocity in the other's frame (v + w x r along n, plus 1/2 (a +
-// |w|^2 |r|) t^2); the pair counts if a vertex within the reach can move more than half of it, or one past the reach
-// can reach the plane (with clearance_m). A box turning about its contact, or spinning flat on a face, moves its far
-// corners along or away from the other, where the spin's bound at the farthest corner counted them as closing. While
-// it turns more than a quarter revolution within the horizon the spin's bound is kept.
+// (|w|^2 + |w x w_o|) |r|) t^2, w the relative spin and w_o the other's); the pair counts if a vertex within the reach
+// can move more than half of it, or one past the reach can reach the plane (with clearance_m). A box turning about
+// its contact, or spinning flat on a face, moves its far corners along or away from the other, where the spin's bound
+// at the farthest corner counted them as closing. Where the bodies turn a quarter revolution or more within the
+// horizon the spin's bound is kept.
 bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
 					double horizon_s, double clearance_m = 0.001, double speculativeReach_m = 0);
 
