@@ -71,13 +71,14 @@ class FrictionModelTest(unittest.TestCase):
         # 0037; the contacts' penetration corrected without momentum, patch 0038), speculative box-box contacts, the
         # halves' slide along the anvils after the fold left to them (SubstepPolicy's speculative reach). At this step
         # the loss depends on where in a substep the striker meets the specimen: moving the impact by a few
-        # microseconds moves a run by up to 20 % at friction 0.15-0.25 (a helper's trace: a kick up the anvils that the
-        # box of the two friction rows holds in one phase and not in another). So each case runs at five impact speeds,
-        # 5.1-5.3 m/s (the model is quasi-static: the same loss at each), and the median is held to the model.
-        # Measured (report/FRICTION.md's coarse table is the 5.2 m/s column): medians -1.6 to +2.1 % for friction
-        # 0.05-0.2 and +1.8 % for the sharp anvils at 0.25 (single runs -0.4 to +20.4 %); the ISO anvils at 0.25
-        # +4.3 % (+2.8 to +4.9 %; the converged runner is itself 2.5-3.7 % above the model there); internal steps
-        # 90-271, median 97 (150 before the halves' slide was left to the speculative contacts).
+        # microseconds moved a run by up to 20 % at friction 0.15-0.25 (a helper's trace: a kick up the anvils that the
+        # box of the two friction rows holds in one phase and not in another; the friction bounds' iterations swapped
+        # the load between contact points until patch 0039 damped a bound's reversals). So each case runs at five
+        # impact speeds, 5.1-5.3 m/s (the model is quasi-static: the same loss at each), and the median is held to the
+        # model, each run to 10 % of it. Measured (report/FRICTION.md's coarse table is the 5.2 m/s column): medians
+        # -4.1 to +2.8 % (the ISO anvils at 0.1 -3.0 %, at 0.15 -0.9 %, at 0.25 +2.8 %), single runs -7.9 to +4.2 %
+        # (-7.9 to +20.0 % before patch 0039); internal steps 89-149, median 95, 47 of 50 within 100 (36 of 50 before
+        # patch 0039, 15 before the halves' slide was left to the speculative contacts).
         coarse = ("--solver=direct", "--speculative-contacts", "--contact-substep=6e-5", "--dt=1e-3")
         iso = ("--anvil-radius=0.001", "--anvil-taper=0.192")
         speeds = (5.1, 5.15, 5.2, 5.25, 5.3)
@@ -93,12 +94,14 @@ class FrictionModelTest(unittest.TestCase):
                         self.assertTrue(r["passed_anvils"] and not r["over_the_top"], r)
                         self.assertLess(r["max_energy_gain_J"], 1e-4 * r["E0_J"], r)
                         errors.append((r["energy_loss_J"] - expected) / expected)
+                        self.assertLess(abs(errors[-1]), 0.10, (mu, v, errors[-1]))
                         steps.append(r["steps"])
                     errors.sort()
                     median = errors[len(errors) // 2]
                     self.assertLess(abs(median), 0.06 if anvils and mu == 0.25 else 0.03, (mu, errors))
         steps.sort()
         self.assertLessEqual(steps[len(steps) // 2], 100, steps)
+        self.assertGreaterEqual(sum(n <= 100 for n in steps), 45, steps)
 
     def test_the_thesis_flat_nose_jams_where_the_standard_striker_does_not(self):
         flat = run("--geometry=thesis", "--friction=0.1")
