@@ -68,21 +68,29 @@ int pieces(const btCollisionObject* object, btScalar grow, Piece* out, int capac
 	return count;
 }
 
+// The mover's motion against the other (relativeMotion)
+struct Motion
+{
+	btVector3 velocity;             // of the mover's centre of mass, in the other's moving frame [m/s]
+	btVector3 spin;                 // the mover's spin in the other's frame, w_m - w_o [rad/s]
+	btVector3 otherSpin;            // the other's spin w_o [rad/s]
+	btVector3 centre;               // the mover's centre of mass
+	double spinSpeed_m_s;           // the bound of the spin's speed at the mover's points
+	double frameAcceleration_m_s2;  // the bound of the other's turning frame's acceleration at the mover's centre
+};
+
 // How far the mover can go against the other within the horizon: `grow` bounds it in every direction (its speed bound
 // times the horizon, plus the accelerations' part and the clearance); along a normal n from the other towards the
 // mover it is at most `fixed` (the spin's part, the accelerations' and the clearance) plus the horizon times the
-// mover's closing speed along n, -velocity . n, where velocity is its centre's in the other's moving frame.
+// mover's closing speed along n, -motion.velocity . n.
 struct Reach
 {
 	btScalar grow;
 	btScalar fixed;
-	btVector3 velocity;
+	Motion motion;
 	btScalar horizon;
 	btScalar clearance;
 	btScalar speculativeReach;  // 0: no speculative contacts
-	btVector3 centre;           // the mover's centre of mass
-	btVector3 spin;             // the mover's spin in the other's frame, w_m - w_o [rad/s]
-	btVector3 otherSpin;        // the other's spin w_o [rad/s]
 	btScalar acceleration;      // the difference of their gravity and the other's frame's acceleration [m/s^2]
 };
 
@@ -102,22 +110,23 @@ struct Reach
 // at any angle).
 int boxVerticesNear(const Piece& mover, const btVector3& n, const btVector3& onOther, const Reach& reach)
 {
+	const Motion& motion = reach.motion;
 	const btScalar h = reach.horizon;
-	const btScalar turn = (reach.spin.length() + reach.otherSpin.length()) * h;
+	const btScalar turn = (motion.spin.length() + motion.otherSpin.length()) * h;
 	if (!mover.shape || mover.shape->getShapeType() != BOX_SHAPE_PROXYTYPE || !(turn < SIMD_HALF_PI))
 	{
 		return -1;
 	}
-	const btScalar curvature = reach.spin.length2() + reach.spin.cross(reach.otherSpin).length();
+	const btScalar curvature = motion.spin.length2() + motion.spin.cross(motion.otherSpin).length();
 	const btBoxShape* box = static_cast<const btBoxShape*>(mover.shape);
 	for (int i = 0; i < 8; i++)
 	{
 		btVector3 vertex;
 		box->getVertex(i, vertex);
 		const btVector3 q = mover.transform(vertex);
-		const btVector3 r = q - reach.centre;
+		const btVector3 r = q - motion.centre;
 		const btScalar height = n.dot(q - onOther);
-		const btScalar along = (reach.velocity + reach.spin.cross(r)).dot(n);
+		const btScalar along = (motion.velocity + motion.spin.cross(r)).dot(n);
 		const btScalar moves = btMax(btScalar(0), -along) * h + btScalar(0.5) * (reach.acceleration + curvature * r.length()) * h * h;
 		if (height <= reach.speculativeReach ? moves > reach.speculativeReach / 2 : moves + reach.clearance >= height)
 		{
@@ -167,7 +176,7 @@ bool within(const Piece& mover, const Piece& other, const Reach& reach)
 	const btVector3 moverNearest = mover.transform(mover.shape->localGetSupportingVertex(-n * mover.transform.getBasis()));
 	const btVector3 otherNearest = other.transform(other.shape->localGetSupportingVertex(n * other.transform.getBasis()));
 	const btScalar alongNormal = n.dot(moverNearest) - n.dot(otherNearest);
-	const btScalar closes = reach.fixed + btMax(btScalar(0), -reach.velocity.dot(n)) * reach.horizon;
+	const btScalar closes = reach.fixed + btMax(btScalar(0), -reach.motion.velocity.dot(n)) * reach.horizon;
 	const btScalar distance = btMin(closest.m_distance, alongNormal);
 	if (reach.speculativeReach > 0)
 	{
@@ -201,55 +210,43 @@ namespace
 // 2 w_o x v and w_o x (w_o x r): frameAcceleration_m_s2 bounds them by 2 |w_o| |v| + |w_o|^2 |r| (r from the other's
 // centre of mass). A ball 0.7 m from the centre of a wall turning at 2 rad/s slides along its face, closing nothing
 // along the normal, and the wall's end sweeps into it after 0.64 s.
-void relativeMotion(const btCollisionObject* mover, const btCollisionObject* other, btVector3& velocity, double& spinSpeed_m_s,
-					double& frameAcceleration_m_s2, btVector3* relativeSpin = nullptr, btVector3* moverCentre = nullptr,
-					btVector3* otherSpin = nullptr)
+Motion relativeMotion(const btCollisionObject* mover, const btCollisionObject* other)
 {
 	const btRigidBody* m = movingBody(mover);
 	const btRigidBody* o = movingBody(other);
 	btVector3 lo, hi;
 	mover->getCollisionShape()->getAabb(mover->getWorldTransform(), lo, hi);
-	const btVector3 centre = m ? m->getCenterOfMassPosition() : mover->getWorldTransform().getOrigin();
-	const btVector3 up = (hi - centre).absolute(), down = (centre - lo).absolute();
+	Motion motion;
+	motion.centre = m ? m->getCenterOfMassPosition() : mover->getWorldTransform().getOrigin();
+	const btVector3 up = (hi - motion.centre).absolute(), down = (motion.centre - lo).absolute();
 	const double reach = double(btVector3(btMax(up.x(), down.x()), btMax(up.y(), down.y()), btMax(up.z(), down.z())).length());
-	btVector3 spin(0, 0, 0);
-	velocity.setValue(0, 0, 0);
+	motion.velocity.setValue(0, 0, 0);
+	motion.spin.setValue(0, 0, 0);
+	motion.otherSpin.setValue(0, 0, 0);
 	if (m)
 	{
-		velocity = m->getLinearVelocity();
-		spin = m->getAngularVelocity();
+		motion.velocity = m->getLinearVelocity();
+		motion.spin = m->getAngularVelocity();
 	}
-	frameAcceleration_m_s2 = 0;
+	motion.frameAcceleration_m_s2 = 0;
 	if (o)
 	{
-		const btVector3 arm = centre - o->getCenterOfMassPosition();
+		const btVector3 arm = motion.centre - o->getCenterOfMassPosition();
 		const btVector3& w = o->getAngularVelocity();
-		velocity -= o->getLinearVelocity() + w.cross(arm);
-		spin -= w;
-		frameAcceleration_m_s2 = double(w.length()) * (2 * double(velocity.length()) + double(w.length()) * double(arm.length()));
+		motion.velocity -= o->getLinearVelocity() + w.cross(arm);
+		motion.spin -= w;
+		motion.otherSpin = w;
+		motion.frameAcceleration_m_s2 = double(w.length()) * (2 * double(motion.velocity.length()) + double(w.length()) * double(arm.length()));
 	}
-	spinSpeed_m_s = double(spin.length()) * reach;
-	if (relativeSpin)
-	{
-		*relativeSpin = spin;
-	}
-	if (moverCentre)
-	{
-		*moverCentre = centre;
-	}
-	if (otherSpin)
-	{
-		*otherSpin = o ? o->getAngularVelocity() : btVector3(0, 0, 0);
-	}
+	motion.spinSpeed_m_s = double(motion.spin.length()) * reach;
+	return motion;
 }
 }  // namespace
 
 double relativeSpeedBound_m_s(const btCollisionObject* mover, const btCollisionObject* other)
 {
-	btVector3 velocity;
-	double spinSpeed_m_s, frameAcceleration_m_s2;
-	relativeMotion(mover, other, velocity, spinSpeed_m_s, frameAcceleration_m_s2);
-	return double(velocity.length()) + spinSpeed_m_s;
+	const Motion motion = relativeMotion(mover, other);
+	return double(motion.velocity.length()) + motion.spinSpeed_m_s;
 }
 
 bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
@@ -269,11 +266,10 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 				continue;
 			}
 			Reach reach;
-			double spinSpeed_m_s, frameAcceleration_m_s2;
-			relativeMotion(mover, other, reach.velocity, spinSpeed_m_s, frameAcceleration_m_s2, &reach.spin, &reach.centre, &reach.otherSpin);
-			const double acceleration_m_s2 = relativeGravity_m_s2(mover, other) + frameAcceleration_m_s2;
-			const double fixed_m = spinSpeed_m_s * horizon_s + 0.5 * acceleration_m_s2 * horizon_s * horizon_s + clearance_m;
-			reach.grow = btScalar(double(reach.velocity.length()) * horizon_s + fixed_m);
+			reach.motion = relativeMotion(mover, other);
+			const double acceleration_m_s2 = relativeGravity_m_s2(mover, other) + reach.motion.frameAcceleration_m_s2;
+			const double fixed_m = reach.motion.spinSpeed_m_s * horizon_s + 0.5 * acceleration_m_s2 * horizon_s * horizon_s + clearance_m;
+			reach.grow = btScalar(double(reach.motion.velocity.length()) * horizon_s + fixed_m);
 			reach.fixed = btScalar(fixed_m);
 			reach.horizon = btScalar(horizon_s);
 			reach.clearance = btScalar(clearance_m);
