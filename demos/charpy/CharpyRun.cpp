@@ -77,6 +77,7 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	r.bend_angle_rad = scene.bendAngle_rad();
 	r.end_bend_angle_rad = scene.endToEndBend_rad();
 	r.max_energy_gain_J = scene.maxEnergyGain_j();
+	r.max_booked_excess_J = scene.maxBookedExcess_j();
 	r.max_penetration_m = scene.maxPenetration_m();
 	r.max_speed_m_s = scene.maxSpeed_m_s();
 	r.max_distance_m = scene.maxDistance_m();
@@ -112,7 +113,7 @@ std::string toJson(const CharpyResult& r)
 		<< ",\"anvil_edge_radius_m\":" << scene::jsonNumber(r.anvil_radius_m) << ",\"anvil_taper_rad\":" << scene::jsonNumber(r.anvil_taper_rad)
 		<< ",\"broken\":" << flag(r.broken) << ",\"passed_anvils\":" << flag(r.passed_anvils) << ",\"over_the_top\":" << flag(r.over_the_top)
 		<< ",\"max_bend_rad\":" << scene::jsonNumber(r.max_bend_rad) << ",\"tunnelled\":" << flag(r.tunnelled) << ",\"finite\":" << flag(r.finite)
-		<< ",\"max_energy_gain_J\":" << scene::jsonNumber(r.max_energy_gain_J) << ",\"max_penetration_m\":" << scene::jsonNumber(r.max_penetration_m)
+		<< ",\"max_energy_gain_J\":" << scene::jsonNumber(r.max_energy_gain_J) << ",\"max_booked_excess_J\":" << scene::jsonNumber(r.max_booked_excess_J) << ",\"max_penetration_m\":" << scene::jsonNumber(r.max_penetration_m)
 		<< ",\"max_speed_m_s\":" << scene::jsonNumber(r.max_speed_m_s) << ",\"max_distance_m\":" << scene::jsonNumber(r.max_distance_m)
 		<< ",\"hammer_angle_end_rad\":" << scene::jsonNumber(r.hammer_angle_end_rad);
 	std::string why;
@@ -137,11 +138,11 @@ std::string toSummary(const CharpyResult& r)
 				  "Charpy impact test, method %s, dt %g s%s, %d iterations, solver %s%s: %ld internal steps to %.2f ms in %.3f s wall time\n"
 				  "  hammer energy E0 %.2f J, impact speed %.3f m/s\n"
 				  "  energy loss %.2f J (plastic work %.2f J, other %.2f J); analytic Mp * theta_pass = %.2f N m * %.4f rad = %.2f J; error %+.2f %%\n"
-				  "  plastic rotation %.3f rad, broken %s, passed anvils %s%s, max energy gain %.3g J, max penetration %.3g m%s\n",
+				  "  plastic rotation %.3f rad, broken %s, passed anvils %s%s, max energy gain %.3g J, plastic work booked beyond the loss %.3g J, max penetration %.3g m%s\n",
 				  r.method.c_str(), r.dt_s, r.auto_dt ? " (auto)" : "", r.iterations, r.solver.c_str(), r.speculative_contacts ? ", speculative contacts" : "", r.internal_steps, 1000.0 * r.end_time_s, r.wall_s, r.E0_J,
 				  r.impact_speed_m_s, r.energy_loss_J, r.plastic_work_J, r.other_loss_J, r.plastic_moment_Nm, r.theta_pass_rad,
 				  r.analytic_J, r.error_pct, r.plastic_rotation_rad, r.broken ? "yes" : "no", r.passed_anvils ? "yes" : "no",
-				  r.tunnelled ? " (TUNNELLED: past the anvils with too little bend to fit the gap)" : "", r.max_energy_gain_J, r.max_penetration_m,
+				  r.tunnelled ? " (TUNNELLED: past the anvils with too little bend to fit the gap)" : "", r.max_energy_gain_J, r.max_booked_excess_J, r.max_penetration_m,
 				  r.finite ? "" : "\n  NOT FINITE: the simulation produced NaN or infinity");
 	std::string summary = text;
 	if (!r.warning.empty())

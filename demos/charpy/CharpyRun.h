@@ -39,6 +39,7 @@ struct CharpyResult
 	double anvil_radius_m = 0;    // 0 = sharp anvil edges
 	double anvil_taper_rad = 0;   // taper of the gap behind rounded edges
 	double max_energy_gain_J = 0;
+	double max_booked_excess_J = 0;  // CharpyScene::maxBookedExcess_j: plastic work booked beyond the energy lost
 	double max_penetration_m = 0;
 	double end_bend_angle_rad = 0;  // rotation of the last part relative to the first at the end, about any axis
 	// the same, and plastic_rotation_rad, at the end of the frame in which every part first got behind the anvils (0

@@ -599,6 +599,7 @@ void CharpyScene::trackAfterStep(double h_s)
 	}
 	const double gain = energies().total_j - m_initialEnergy_j;
 	m_maxEnergyGain_j = std::max(m_maxEnergyGain_j, gain);
+	m_maxBookedExcess_j = std::max(m_maxBookedExcess_j, gain + plasticWork_j());
 	for (int i = 0; i < m_impl->bodies.size(); i++)
 	{
 		const btRigidBody* body = m_impl->bodies[i];

@@ -66,6 +66,10 @@ public:
 	// position correction can throw them out (report/REPORT.md's landscape of substeps).
 	std::string speculativeReachWarning() const;
 	double maxEnergyGain_j() const { return m_maxEnergyGain_j; }
+	// The largest excess, after any internal step, of the plastic work booked so far over the energy the scene has
+	// lost (E0 - E) [J]: every other loss (friction, contacts) is >= 0, so a positive excess is work booked that no
+	// force paid for (a yielding joint turned by the contacts' position correction) or energy made
+	double maxBookedExcess_j() const { return m_maxBookedExcess_j; }
 	double plasticWork_j() const;
 	double plasticRotation_rad() const;
 	double bendAngle_rad() const;    // relative rotation of the two middle parts about Y
@@ -132,6 +136,7 @@ private:
 	double m_initialEnergy_j = 0;
 	double m_impactSpeed_m_s = 0;
 	double m_maxEnergyGain_j = 0;
+	double m_maxBookedExcess_j = 0;
 	double m_maxPenetration_m = 0;
 	double m_maxSpeed_m_s = 0;
 	double m_maxDistance_m = 0;

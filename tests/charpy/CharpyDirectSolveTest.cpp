@@ -115,6 +115,39 @@ TEST(CharpyDirectSolve, AtCoarseStepsTheLossIsNoMoreThanTheBookedWorkExplainsAnd
 	}
 }
 
+// max_booked_excess_J (CharpyScene::maxBookedExcess_j): the largest excess over a run of the plastic work booked over
+// the energy lost. Every other loss is >= 0, so an excess is flow no force paid for. Standard striker, friction 0.1,
+// 5.2 m/s, the coarse setting (60 us substeps, 1 ms frames): with the ISO anvils' rounded edges the contacts' position
+// correction turns the yielding hinge as the halves round the edges, and the joint books 2.96 J that the hammer never
+// gave (measured; 0.9 to 7.2 J over the 25 ISO runs at friction 0.05-0.25 and 5.1-5.3 m/s, the most at friction 0.05
+// and 5.3 m/s, whose loss is 7.9 % under the friction model; 0.18 J at 30 us). At 10 us the correction has nothing to
+// turn (4.8e-6 J), and with the sharp anvils' boxes nothing either (0.0 J). Holding the joints rigid in the
+// correction (an experiment in btDirectJointSolver, not kept) takes the excess away but moves every coarse run up
+// (mean error 1.8 -> 5.4 %): the correction's turn of a half pinched between the nose and an anvil is part of how the
+// coarse runs keep their shape. When a fix pays for that flow, the first expectation becomes the last.
+TEST(CharpyDirectSolve, TheWorkBookedBeyondTheLossIsTheFlowTheContactCorrectionTurnsAtRoundedAnvils)
+{
+	auto run = [](double anvilRadius_m, double substep_s) {
+		CharpyParameters p = coarseSpeculative();
+		applyStandardGeometry(p);
+		p.friction = 0.1;
+		p.impact_speed_m_s = 5.2;
+		if (anvilRadius_m > 0)
+		{
+			p.anvil_radius_m = anvilRadius_m;
+			p.anvil_taper_rad = 0.192;
+		}
+		p.contact_substep_s = substep_s;
+		return runCharpy(p);
+	};
+	const CharpyResult isoCoarse = run(0.001, 6e-5);
+	const CharpyResult isoFine = run(0.001, 1e-5);
+	const CharpyResult sharpCoarse = run(0, 6e-5);
+	EXPECT_GT(isoCoarse.max_booked_excess_J, 0.5) << "the correction's flow at the rounded edges";
+	EXPECT_LT(isoFine.max_booked_excess_J, 0.01);
+	EXPECT_LT(sharpCoarse.max_booked_excess_J, 0.1);
+}
+
 // Speculative box-box contacts (patch 0036, --speculative-contacts): the specimen's halves, the sharp anvils and the flat
 // nose are boxes, which get contacts before they overlap (within the contact breaking threshold, 0.3 mm here), so at
 // contact steps over which the hammer closes well within that (4.4 m/s x 30 us = 0.13 mm) no half sinks into an
