@@ -66,20 +66,24 @@ class FrictionModelTest(unittest.TestCase):
                     self.assertLess(r["max_penetration_m"], 1e-4, r)
                     self.assertLess(abs(r["energy_loss_J"] - expected) / expected, 0.03, (mu, r["energy_loss_J"], expected))
 
-    def test_coarse_steps_with_the_direct_solve_and_speculative_contacts_match_the_model(self):
+    def test_coarse_steps_with_the_direct_solve_and_speculative_contacts_match_the_converged_runs(self):
         # issue 25: 0.06 ms contact substeps in 1 ms frames, btDirectJointSolver (two friction rows per contact, patch
-        # 0037; the contacts' penetration corrected without momentum, patch 0038), speculative box-box contacts, the
-        # halves' slide along the anvils after the fold left to them (SubstepPolicy's speculative reach). At this step
-        # the loss depends on where in a substep the striker meets the specimen: moving the impact by a few
-        # microseconds moved a run by up to 20 % at friction 0.15-0.25 (a helper's trace: a kick up the anvils that the
-        # box of the two friction rows holds in one phase and not in another; the friction bounds' iterations swapped
-        # the load between contact points until patch 0039 damped a bound's reversals). So each case runs at five
-        # impact speeds, 5.1-5.3 m/s (the model is quasi-static: the same loss at each), and the median is held to the
-        # model, each run to 10 % of it. Measured (report/FRICTION.md's coarse table is the 5.2 m/s column): medians
-        # -4.1 to +2.8 % (the ISO anvils at 0.1 -3.0 %, at 0.15 -0.9 %, at 0.25 +2.8 %), single runs -7.9 to +4.2 %
-        # (-7.9 to +20.0 % before patch 0039); internal steps 89-149, median 95, 47 of 50 within 100 (36 of 50 before
-        # patch 0039, 15 before the halves' slide was left to the speculative contacts).
+        # 0037; the contacts' penetration corrected without momentum, patch 0038; friction bounds whose reversals are
+        # damped, patch 0039), speculative contacts for the specimen's boxes and the hammer's children (patches 0036,
+        # 0040), the halves' slide along the anvils after the fold left to them (SubstepPolicy's speculative reach).
+        # Each case is held to its converged run (2 us substeps, 5.2 m/s), which is held to the model (measured +0.3 %
+        # with the sharp anvils, +1.4 to +4.2 % with the ISO anvils, the most at friction 0.25). The loss at coarse
+        # steps depends a little on where in a substep the striker meets the specimen, so each case runs at five impact
+        # speeds, 5.1-5.3 m/s (the converged loss moves with the speed by at most 0.6 %, 1.4 % and 2.5 % with the ISO
+        # anvils at friction 0.2 and 0.25), the median held to 3 % of the converged loss and each run to 6 %. Measured
+        # (report/FRICTION.md's coarse table is the 5.2 m/s column): medians 0.0 to +2.8 %, single runs -1.8 to +5.1 %
+        # (-1.8 to +4.5 % against each speed's own converged run). Before patch 0040 the medians were -4.5 to +2.0 %
+        # and single runs -9.6 to +3.0 %: the hammer's striker got its contacts only once its box overlapped a half,
+        # sank into it, and the contacts' position correction turned the yielding hinge (0.9 to 7.2 J of plastic
+        # work booked beyond the energy lost, max_booked_excess_J). Internal steps 91-121, median 96, 46 of 50
+        # within 100 (89-149 and 47 before patch 0040).
         coarse = ("--solver=direct", "--speculative-contacts", "--contact-substep=6e-5", "--dt=1e-3")
+        converged = ("--solver=direct", "--speculative-contacts", "--contact-substep=2e-6", "--dt=1e-3", "--impact-speed=5.2")
         iso = ("--anvil-radius=0.001", "--anvil-taper=0.192")
         speeds = (5.1, 5.15, 5.2, 5.25, 5.3)
         steps = []
@@ -88,17 +92,19 @@ class FrictionModelTest(unittest.TestCase):
             for mu in (0.05, 0.1, 0.15, 0.2, 0.25):
                 with self.subTest(anvils=anvils, mu=mu):
                     expected, _ = model.loss(mu)
+                    reference = run("--geometry=standard", *anvils, f"--friction={mu}", *converged)["energy_loss_J"]
+                    self.assertLess(abs(reference - expected) / expected, 0.05, (mu, reference, expected))
                     errors = []
                     for v in speeds:
                         r = run("--geometry=standard", *anvils, f"--friction={mu}", f"--impact-speed={v}", *coarse)
                         self.assertTrue(r["passed_anvils"] and not r["over_the_top"], r)
                         self.assertLess(r["max_energy_gain_J"], 1e-4 * r["E0_J"], r)
-                        errors.append((r["energy_loss_J"] - expected) / expected)
-                        self.assertLess(abs(errors[-1]), 0.10, (mu, v, errors[-1]))
+                        self.assertLess(r["max_booked_excess_J"], 1e-3 * r["E0_J"], r)
+                        errors.append((r["energy_loss_J"] - reference) / reference)
+                        self.assertLess(abs(errors[-1]), 0.06, (mu, v, errors[-1]))
                         steps.append(r["steps"])
                     errors.sort()
-                    median = errors[len(errors) // 2]
-                    self.assertLess(abs(median), 0.06 if anvils and mu == 0.25 else 0.03, (mu, errors))
+                    self.assertLess(abs(errors[len(errors) // 2]), 0.03, (mu, errors))
         steps.sort()
         self.assertLessEqual(steps[len(steps) // 2], 100, steps)
         self.assertGreaterEqual(sum(n <= 100 for n in steps), 45, steps)

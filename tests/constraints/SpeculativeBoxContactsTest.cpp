@@ -177,8 +177,9 @@ struct Landing
 };
 
 // A 1 m cube (10 kg) dropped at speed_m_s onto a static 10 x 1 x 10 m box from gap_m above it, restitution 0, at 60 Hz
-// steps. Bullet gives the pair the cube's contact breaking threshold: 0.02 x its angular motion disc, 1.73 cm.
-Landing land(bool speculative, double speed_m_s, double gap_m)
+// steps. Bullet gives the pair the cube's contact breaking threshold: 0.02 x its angular motion disc, 1.73 cm. With
+// `compound` the cube is the only child of a compound shape (the same threshold).
+Landing land(bool speculative, double speed_m_s, double gap_m, bool compound = false)
 {
 	btDefaultCollisionConfiguration configuration;
 	btCollisionDispatcher dispatcher(&configuration);
@@ -192,7 +193,9 @@ Landing land(bool speculative, double speed_m_s, double gap_m)
 	ground.getWorldTransform().setOrigin(btVector3(0, -0.5f, 0));
 	btVector3 inertia;
 	cubeShape.calculateLocalInertia(10, inertia);
-	btRigidBody cube(10, nullptr, &cubeShape, inertia);
+	btCompoundShape compoundShape;
+	compoundShape.addChildShape(btTransform::getIdentity(), &cubeShape);
+	btRigidBody cube(10, nullptr, compound ? static_cast<btCollisionShape*>(&compoundShape) : &cubeShape, inertia);
 	cube.getWorldTransform().setOrigin(btVector3(0, btScalar(0.5 + gap_m), 0));
 	cube.setLinearVelocity(btVector3(0, btScalar(-speed_m_s), 0));
 	cube.setActivationState(DISABLE_DEACTIVATION);
@@ -245,4 +248,23 @@ TEST(SpeculativeBoxContacts, ABoxLandingWithinTheThresholdAStepStopsAtTheFace)
 	EXPECT_LT(speculative.maxPenetration_m, 0.004);
 	EXPECT_LT(speculative.maxRebound_m_s, 0.05);
 	EXPECT_LT(fastCaught, 16) << "at 2 m/s a step closes more than the threshold: some heights must miss";
+}
+
+// Patch 0040: a compound's children are tested within the contact breaking threshold of the other object, so a child
+// gets the speculative contacts a shape of its own would. Before it the child's algorithm ran only once its box
+// overlapped the ground's, and the compound cube landed as without speculative contacts.
+TEST(SpeculativeBoxContacts, ACompoundsChildLandingWithinTheThresholdAStepStopsAtTheFaceToo)
+{
+	Landing upstream, speculative;
+	for (int k = 0; k < 16; k++)
+	{
+		const double gap = 0.001 + 0.02 * k / 15.0;
+		const Landing u = land(false, 0.8, gap, true), v = land(true, 0.8, gap, true);
+		upstream.maxPenetration_m = std::max(upstream.maxPenetration_m, u.maxPenetration_m);
+		speculative.maxPenetration_m = std::max(speculative.maxPenetration_m, v.maxPenetration_m);
+		speculative.maxRebound_m_s = std::max(speculative.maxRebound_m_s, v.maxRebound_m_s);
+	}
+	EXPECT_GT(upstream.maxPenetration_m, 0.01);
+	EXPECT_LT(speculative.maxPenetration_m, 0.004);
+	EXPECT_LT(speculative.maxRebound_m_s, 0.05);
 }
