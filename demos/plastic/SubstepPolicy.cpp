@@ -197,11 +197,13 @@ bool within(const Piece& mover, const Piece& other, const Reach& reach)
 
 namespace
 {
-// How far a body's centre's acceleration can be from its gravity because a joint holds it to a body that does not move
-// [m/s^2]: about a hinge's or a ball joint's fixed pivot p it turns, its centre accelerating by |w|^2 |c - p| towards p,
-// and the pivot takes gravity's part along the arm (at most |g|). A hammer swinging at 5.5 rad/s with its centre 0.7 m
-// below its pivot is 31 m/s^2 from its gravity, 0.4 mm over 5 ms. 0 for a body no such joint holds; Bullet records a
-// joint on its bodies when the world adds it with collisions between them disabled.
+// How far a body's centre's acceleration can be from its gravity because a hinge holds it to a body that does not move
+// [m/s^2]: it turns about the hinge's fixed axis through the pivot p, its centre accelerating by at most |w|^2 |c - p|
+// towards the axis, and by gravity's torque about the axis at most |g| across the arm (the body's moment of inertia
+// about the axis is at least m |c - p|^2); the pivot takes the rest of its weight. A hammer swinging at 5.5 rad/s with
+// its centre 0.7 m below its pivot is 31 m/s^2 from its gravity, 0.4 mm over 5 ms. A hinge's motor and limit are left
+// out, as other forces are, and so are ball joints, whose body's gyroscopic turn this does not bound. 0 for a body no
+// such hinge holds; Bullet records a joint on its bodies when the world adds it with collisions between them disabled.
 double heldAcceleration_m_s2(const btRigidBody* body)
 {
 	double held = 0;
@@ -214,21 +216,12 @@ double heldAcceleration_m_s2(const btRigidBody* body)
 		{
 			continue;
 		}
-		btVector3 pivotInBody;
-		if (joint->getConstraintType() == HINGE_CONSTRAINT_TYPE)
-		{
-			const btHingeConstraint* hinge = static_cast<const btHingeConstraint*>(joint);
-			pivotInBody = (isA ? hinge->getAFrame() : hinge->getBFrame()).getOrigin();
-		}
-		else if (joint->getConstraintType() == POINT2POINT_CONSTRAINT_TYPE)
-		{
-			const btPoint2PointConstraint* ball = static_cast<const btPoint2PointConstraint*>(joint);
-			pivotInBody = isA ? ball->getPivotInA() : ball->getPivotInB();
-		}
-		else
+		if (joint->getConstraintType() != HINGE_CONSTRAINT_TYPE)
 		{
 			continue;
 		}
+		const btHingeConstraint* hinge = static_cast<const btHingeConstraint*>(joint);
+		const btVector3 pivotInBody = (isA ? hinge->getAFrame() : hinge->getBFrame()).getOrigin();
 		const btVector3 arm = body->getCenterOfMassPosition() - body->getCenterOfMassTransform() * pivotInBody;
 		held = std::max(held, double(body->getAngularVelocity().length2()) * double(arm.length()) + double(body->getGravity().length()));
 	}

@@ -32,10 +32,10 @@ double relativeGravity_m_s2(const btCollisionObject* mover, const btCollisionObj
 // and a non-convex shape stands as its box. GJK's tolerances follow gVoronoiSimplexLengthScale (patch 0018): a scene
 // of millimetre bodies sets it around the call, and the gap along n bounds its answer from below if it does not. The
 // velocities are taken as they are: what forces add within the horizon (joints between moving bodies, contacts) is
-// left to clearance_m. A body that a hinge or a ball joint holds to a body that does not move turns about its pivot:
-// its centre's acceleration is at most |w|^2 |c - p| + |g| from its gravity (a swinging hammer's, 31 m/s^2), and that
-// is added to the pair's gravity difference (Bullet records the joint on the body when the world adds it with
-// collisions between the linked bodies disabled).
+// left to clearance_m. A body that a hinge holds to a body that does not move turns about the hinge's axis: its
+// centre's acceleration is at most |w|^2 |c - p| + |g| from its gravity (a swinging hammer's, 31 m/s^2; the hinge's
+// motor and limit left out), and that is added to the pair's gravity difference (Bullet records the joint on the body
+// when the world adds it with collisions between the linked bodies disabled).
 // With speculative contacts (speculativeReach_m > 0, the distance within which the pair's contacts are made before
 // they touch: the shapes' contact breaking threshold), a pair already that close is left to them: it counts only if
 // its motion within the horizon (closing speed, spin and accelerations, without clearance_m) is more than half of

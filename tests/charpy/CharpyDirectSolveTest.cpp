@@ -118,13 +118,15 @@ TEST(CharpyDirectSolve, AtCoarseStepsTheLossIsNoMoreThanTheBookedWorkExplainsAnd
 // max_booked_excess_J (CharpyScene::maxBookedExcess_j): the largest excess over a run of the plastic work booked over
 // the energy lost. Every other loss is >= 0, so an excess is flow no force paid for (it is a lower bound of that flow:
 // the run's other losses can hide some). Standard striker, ISO anvils, friction 0.1, 5.2 m/s, 60 us substeps in 1 ms
-// frames: without speculative contacts the halves and the striker sink into each other and into the anvils' rounded
-// edges, and the contacts' position correction turns the yielding hinge: the joint books 3.17 J the hammer never gave
-// (measured). With them, 0.0 J: since patch 0040 a compound's children get speculative contacts too. Before it the
-// striker, a child of the hammer's compound, got its contacts only once its box overlapped a half's, and the runs
-// booked 0.9 to 7.2 J so (2.96 J in this one; the 25 ISO runs at friction 0.05-0.25 and 5.1-5.3 m/s), and the same
-// runs with the sharp anvils 0.0 to 0.1 J. At 10 us there is nothing to correct (0.0 J).
-TEST(CharpyDirectSolve, SpeculativeContactsOfTheHammersChildrenLeaveNoFlowThatNoForcePaidFor)
+// frames: without speculative contacts the halves sink into the anvils' rounded edges and the striker, and the
+// contacts' position correction turns the yielding hinge: the joint books 3.17 J the hammer never gave (measured).
+// With them, 0.0 J: since patch 0040 a compound's children get speculative contacts too, and the ISO anvils (a capsule
+// edge and boxes) and the hammer (its striker) are compounds. Before it a child got its contacts only once its box
+// overlapped a half's, and the runs booked up to 7.2 J so (2.96 J in this one; 20 of the 25 ISO runs at friction
+// 0.05-0.25 and 5.1-5.3 m/s over 0.1 J, mostly at the anvils' edges: a review's split left at most 0.10 J with the
+// anvils' children alone and 2.78 J with the hammer's alone), and the same runs with the sharp anvils (boxes) 0.0 to
+// 0.1 J. At 10 us there is nothing to correct (0.0 J).
+TEST(CharpyDirectSolve, SpeculativeContactsOfCompoundChildrenLeaveNoFlowThatNoForcePaidFor)
 {
 	auto run = [](double anvilRadius_m, double substep_s, bool speculative) {
 		CharpyParameters p = coarseSpeculative();
@@ -159,8 +161,9 @@ TEST(CharpyDirectSolve, SpeculativeContactsOfTheHammersChildrenLeaveNoFlowThatNo
 // nose's speculative contacts to 4.9 ms, and a 0.1 ms frame is at least one step (89 with --auto-dt). At 100 us, frames
 // of 0.5 ms take 35 steps where 0.1 ms frames take 32: the clear end (no half can touch an anvil within a frame) comes
 // later with longer frames. Since patch 0040 the nose, a child of the hammer's compound, gets speculative contacts as
-// the halves do, and no yielding joint is turned by the contacts' correction (CharpyScene::maxBookedExcess_j, 2.1 J at
-// 60 us before it, when the losses were +0.2 / +1.1 / +2.2 % at 10 / 30 / 60 us). Between the substeps tested the loss
+// the halves do, and up to 90 us no yielding joint is turned by the contacts' correction (CharpyScene::maxBookedExcess_j,
+// 2.1 J at 60 us before it, when the losses were +0.2 / +1.1 / +2.2 % at 10 / 30 / 60 us); at 100 us the nose closes
+// 0.44 mm in a step, past the 0.31 mm reach, and the joint still books 0.73 J so. Between the substeps tested the loss
 // is +3.2 / +5.2 / +5.5 / +7.8 / +6.7 % at 40 / 50 / 70 / 80 / 90 us: the contacts' own loss grows with the step (5.5 to
 // 8.8 J against 1 J converged), where before the joints' unpaid flow took 0.9-2.1 J off it (+1.2 to +3.9 % then).
 // Without speculative contacts, 125.2 J at 50 us with the halves 0.6 mm deep in the anvils.
@@ -190,8 +193,9 @@ TEST(CharpyDirectSolve, SpeculativeContactsKeepTheLossWithinThreePercentOfConver
 			// measured at most 0.05 mm at 30 us, 0.18 mm at 60 us, 0.26 mm at 100 us
 			EXPECT_LT(r.max_penetration_m, substep <= 3e-5 ? 0.0001 : 0.0003) << substep << " s in " << frame << " s frames";
 			// issue 25's budget, the whole test in at most 100 internal steps: 90-99 at 30 us in frames of 0.2 ms and more
-			// (110 in 0.1 ms frames), 46-48 at 60 us, 30-35 at 100 us (with the near test's 1 mm allowance 152, 79, 52)
-			const int budget = substep == 3e-5 ? (frame < 2e-4 ? 110 : 100) : substep == 6e-5 ? 60 : substep == 1e-4 ? 60 : 1000;
+			// (110 in 0.1 ms frames: past the target there), 46-48 at 60 us, 30-35 at 100 us (with the near test's 1 mm
+			// allowance 152, 79, 52)
+			const int budget = substep == 3e-5 ? (frame < 2e-4 ? 115 : 100) : substep == 6e-5 ? 60 : substep == 1e-4 ? 60 : 1000;
 			EXPECT_LE(r.internal_steps, budget) << substep << " s in " << frame << " s frames";
 		}
 		EXPECT_LT(most - least, 0.005 * converged.energy_loss_J) << "the frame step changes the loss at " << substep << " s substeps";

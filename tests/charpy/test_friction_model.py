@@ -78,9 +78,10 @@ class FrictionModelTest(unittest.TestCase):
         # anvils at friction 0.2 and 0.25), the median held to 3 % of the converged loss and each run to 6 %. Measured
         # (report/FRICTION.md's coarse table is the 5.2 m/s column): medians 0.0 to +2.8 %, single runs -1.8 to +5.1 %
         # (-1.8 to +4.5 % against each speed's own converged run). Before patch 0040 the medians were -4.5 to +2.0 %
-        # and single runs -9.6 to +3.0 %: the hammer's striker got its contacts only once its box overlapped a half,
-        # sank into it, and the contacts' position correction turned the yielding hinge (0.9 to 7.2 J of plastic
-        # work booked beyond the energy lost, max_booked_excess_J). Internal steps 91-121, median 96, 46 of 50
+        # and single runs -9.6 to +3.0 %: a compound's child (the ISO anvils' rounded edges, the hammer's striker) got
+        # its contacts only once its box overlapped a half, the half sank into it, and the contacts' position
+        # correction turned the yielding hinge (up to 7.2 J of plastic work booked beyond the energy lost,
+        # max_booked_excess_J). Internal steps 91-121, median 96, 46 of 50
         # within 100 (89-149 and 47 before patch 0040).
         coarse = ("--solver=direct", "--speculative-contacts", "--contact-substep=6e-5", "--dt=1e-3")
         converged = ("--solver=direct", "--speculative-contacts", "--contact-substep=2e-6", "--dt=1e-3", "--impact-speed=5.2")
