@@ -77,7 +77,6 @@ struct Motion
 	btVector3 centre;               // the mover's centre of mass
 	double spinSpeed_m_s;           // the bound of the spin's speed at the mover's points
 	double frameAcceleration_m_s2;  // the bound of the other's turning frame's acceleration at the mover's centre
-	double heldAcceleration_m_s2;   // the bound of what joints to static bodies add to the pair's gravity difference
 };
 
 // How far the mover can go against the other within the horizon: `grow` bounds it in every direction (its speed bound
@@ -203,10 +202,16 @@ namespace
 // about the axis is at least m |c - p|^2); the pivot takes the rest of its weight. A hammer swinging at 5.5 rad/s with
 // its centre 0.7 m below its pivot is 31 m/s^2 from its gravity, 0.4 mm over 5 ms. A hinge's motor and limit are left
 // out, as other forces are, and so are ball joints, whose body's gyroscopic turn this does not bound. 0 for a body no
-// such hinge holds; Bullet records a joint on its bodies when the world adds it with collisions between them disabled.
-double heldAcceleration_m_s2(const btRigidBody* body)
+// such hinge holds (and for an object that does not move); Bullet records a joint on its bodies when the world adds it
+// with collisions between them disabled.
+double heldAcceleration_m_s2(const btCollisionObject* object)
 {
+	const btRigidBody* body = movingBody(object);
 	double held = 0;
+	if (!body)
+	{
+		return held;
+	}
 	for (int i = 0; i < body->getNumConstraintRefs(); i++)
 	{
 		const btTypedConstraint* joint = const_cast<btRigidBody*>(body)->getConstraintRef(i);  // Bullet's getter is not const
@@ -264,7 +269,6 @@ Motion relativeMotion(const btCollisionObject* mover, const btCollisionObject* o
 		motion.spin = m->getAngularVelocity();
 	}
 	motion.frameAcceleration_m_s2 = 0;
-	motion.heldAcceleration_m_s2 = (m ? heldAcceleration_m_s2(m) : 0.0) + (o ? heldAcceleration_m_s2(o) : 0.0);
 	if (o)
 	{
 		const btVector3 arm = motion.centre - o->getCenterOfMassPosition();
@@ -295,6 +299,7 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 	for (const btCollisionObject* other : others)
 	{
 		const int numOther = pieces(other, btScalar(0), theirs, kCapacity);
+		const double otherHeld_m_s2 = heldAcceleration_m_s2(other);
 		for (const btCollisionObject* mover : movers)
 		{
 			if (other == mover)
@@ -303,7 +308,8 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 			}
 			Reach reach;
 			reach.motion = relativeMotion(mover, other);
-			const double acceleration_m_s2 = relativeGravity_m_s2(mover, other) + reach.motion.frameAcceleration_m_s2 + reach.motion.heldAcceleration_m_s2;
+			const double acceleration_m_s2 =
+				relativeGravity_m_s2(mover, other) + reach.motion.frameAcceleration_m_s2 + heldAcceleration_m_s2(mover) + otherHeld_m_s2;
 			const double fixed_m = reach.motion.spinSpeed_m_s * horizon_s + 0.5 * acceleration_m_s2 * horizon_s * horizon_s + clearance_m;
 			reach.grow = btScalar(double(reach.motion.velocity.length()) * horizon_s + fixed_m);
 			reach.fixed = btScalar(fixed_m);
