@@ -12,15 +12,17 @@ Model (one half of the specimen, by symmetry; plane X-Z, X = impact direction, Z
 - the striker is a circle of radius rs (the rounded edge, centre on the symmetry plane) that pushes the
   halves' front faces (the thesis' flat nose, which bears with its corners off mid-span, is not modelled);
   each anvil edge is a circle of radius ra whose centre is ra behind the anvil face and ra beyond the gap's
-  side face (ra = 0, the scene's sharp edges; with ra > 0 the model stops where the back face stops
-  rolling on the circle, before the corner rounds it);
+  side face (ra = 0, the scene's sharp edges); the back face rolls on the circle until the contact reaches
+  the half's end, then the back corner slides round the circle until it drops into the gap (its z reaches
+  gap / 2, where the sharp edge's corner leaves too; the tapered wall behind a rounded edge falls away from a
+  corner that moves towards mid-span);
 - contacts are unilateral with Coulomb friction mu: the friction force opposes the sliding velocity of the
   half's material point over the contact, found from the mechanism's kinematics;
-- for every half angle phi: position (the hinge stays on the symmetry plane, the back face touches the anvil
-  circle, the front face touches the striker circle), then equilibrium of the half (two forces, one
+- for every half angle phi: position (the hinge stays on the symmetry plane, the back face or its corner touches
+  the anvil circle, the front face touches the striker circle), then equilibrium of the half (two forces, one
   moment) for the striker force Fs, the anvil force Fa and N. The hammer's resisting force is 2 x the
   X component of the striker force; its work over the striker's travel until the half slips off the anvil
-  edge (the contact point reaches the half's end) is the loss. Without friction it is Mp x theta_pass
+  edge is the loss. Without friction it is Mp x theta_pass
   exactly; the contacts self-lock when the equilibrium has no solution with positive contact forces.
 Inertia (the halves' kinetic energy, impacts) is not in the model.
 
@@ -62,24 +64,47 @@ class CharpyFrictionModel:
         self.ra = anvil_radius_m
         self.za = gap_m / 2 + anvil_radius_m  # anvil circle centre: x = -ra, z = za
         self.mp = fy_pa * width_m * ligament ** 2 / 4
-        self.phi_pass = self._phi_pass()
+        self.phi_face = self._bisect(lambda phi: self.anvil_contact(phi) < self.half_length)
+        self.phi_pass = self.phi_face if anvil_radius_m == 0 else self._bisect(
+            lambda phi: self.corner_z(phi) > gap_m / 2)
 
-    # geometry for a half angle phi: u_a = (sin, cos) along the half, u_n = (cos, -sin) its front normal (x, z)
+    # geometry for a half angle phi: u_a = (sin, cos) along the half, u_n = (cos, -sin) its front normal (x, z). Up to
+    # phi_face the back face rolls on the anvil circle; past it (rounded edges only) the back face's corner slides
+    # round the circle until it drops into the gap (its z reaches gap / 2, the circle's lowest point; the tapered
+    # wall behind it falls away from a corner that moves towards mid-span)
+    def corner_z(self, phi):
+        """z of the half's back corner (its end on the back face)"""
+        return self.half_length * math.cos(phi) + self.d * math.sin(phi)
+
+    def _corner_dz(self, phi):
+        return min(self.ra, max(-self.ra, self.corner_z(phi) - self.za))
+
     def hinge_x(self, phi):
-        return (self.d + self.ra - self.za * math.sin(phi)) / math.cos(phi) - self.ra
+        if phi <= self.phi_face or self.ra == 0:
+            return (self.d + self.ra - self.za * math.sin(phi)) / math.cos(phi) - self.ra
+        dz = self._corner_dz(phi)
+        return (math.sqrt(self.ra * self.ra - dz * dz) - self.ra - self.half_length * math.sin(phi)
+                + self.d * math.cos(phi))
 
     def striker_x(self, phi):
         return self.hinge_x(phi) + (self.front + self.rs) / math.cos(phi)
 
     def anvil_contact(self, phi):
-        """distance along the half from the hinge to the anvil contact point"""
+        """distance along the half from the hinge to the anvil contact point while the back face rolls"""
         return (self.za - (self.d + self.ra) * math.sin(phi)) / math.cos(phi)
 
-    def _phi_pass(self):
+    def anvil_normal(self, phi):
+        """unit normal of the anvil's force on the half: the back face's while it rolls, the circle's at the corner"""
+        if phi <= self.phi_face or self.ra == 0:
+            return (math.cos(phi), -math.sin(phi))
+        dz = self._corner_dz(phi)
+        return (math.sqrt(self.ra * self.ra - dz * dz) / self.ra, dz / self.ra)
+
+    def _bisect(self, below):
         lo, hi = 0.0, math.pi / 2 - 1e-9
         for _ in range(200):
             mid = (lo + hi) / 2
-            if self.anvil_contact(mid) < self.half_length:
+            if below(mid):
                 lo = mid
             else:
                 hi = mid
@@ -95,19 +120,21 @@ class CharpyFrictionModel:
         xh, xs = self.hinge_x(phi), self.striker_x(phi)
         # contact points relative to the hinge (x, z); the hinge is at (xh, 0)
         ts = (xs - self.rs * un[0] - xh, -self.rs * un[1])
-        ta = (-self.ra + self.ra * un[0] - xh, self.za + self.ra * un[1])
+        na = self.anvil_normal(phi)
+        ta = (-self.ra + self.ra * na[0] - xh, self.za + self.ra * na[1])
+        tangent = (-na[1], na[0])
 
         def velocity(r):  # of the half's material point at r, per unit dphi: H' + J r, J(x, z) = (z, -x)
             return (dxh + r[1], -r[0])
 
         vs = velocity(ts)
         slip_s = (vs[0] - dxs) * ua[0] + vs[1] * ua[1]
-        slip_a = velocity(ta)[0] * ua[0] + velocity(ta)[1] * ua[1]
+        slip_a = velocity(ta)[0] * tangent[0] + velocity(ta)[1] * tangent[1]
         sign_s = math.copysign(1.0, slip_s) if abs(slip_s) > 1e-12 else 0.0
         sign_a = math.copysign(1.0, slip_a) if abs(slip_a) > 1e-12 else 0.0
         # unit forces on the half per unit normal force: striker -un - mu sign_s ua, anvil +un - mu sign_a ua
         fs = (-un[0] - mu * sign_s * ua[0], -un[1] - mu * sign_s * ua[1])
-        fa = (un[0] - mu * sign_a * ua[0], un[1] - mu * sign_a * ua[1])
+        fa = (na[0] - mu * sign_a * tangent[0], na[1] - mu * sign_a * tangent[1])
 
         def torque(r, f):  # work per unit dphi of force f at r: f . J r
             return f[0] * r[1] - f[1] * r[0]
@@ -128,17 +155,20 @@ class CharpyFrictionModel:
         return -2.0 * force_s * fs[0]
 
     def loss(self, mu, steps=4000):
-        """(loss J, None) or (None, half angle at which the contacts lock)"""
+        """(loss J, None) or (None, half angle at which the contacts lock); the rolling and the corner's slide are
+        integrated apart, with as many steps each (the hinge's travel has a kink between them, and its rate grows
+        without bound as the corner reaches the circle's lowest point)"""
         total = 0.0
-        for i in range(steps):
-            p0 = self.phi_pass * i / steps
-            p1 = self.phi_pass * (i + 1) / steps
-            pm = (p0 + p1) / 2
-            force = self.resisting_force(pm, mu)
-            if force is None:
-                return None, pm
-            travel = self.striker_x(p0) - self.striker_x(p1)
-            total += force * travel
+        for start, end in ((0.0, self.phi_face), (self.phi_face, self.phi_pass)):
+            n = steps
+            for i in range(n if end > start else 0):
+                p0 = start + (end - start) * i / n
+                p1 = start + (end - start) * (i + 1) / n
+                pm = (p0 + p1) / 2
+                force = self.resisting_force(pm, mu)
+                if force is None:
+                    return None, pm
+                total += force * (self.striker_x(p0) - self.striker_x(p1))
         return total, None
 
 

@@ -35,6 +35,19 @@ class FrictionModelTest(unittest.TestCase):
         self.assertIsNone(lock)
         self.assertAlmostEqual(loss / r["analytic_J"], 1.0, delta=1e-3)
 
+    def test_rounded_anvils_without_friction_cost_the_plastic_work_of_the_sharp_anvils_pass_angle(self):
+        # the back corner slides round the 1 mm edge until it drops into the gap where a sharp edge lets it go: the
+        # same pass angle, and (virtual work) the hammer's work over the corner's slide, whose hinge travel has no
+        # bound on its rate at the end, is the hinge's. Before the corner's slide was modelled the rounded anvils'
+        # model stopped 1.07 J short (126.33 J), and these runs with friction ended 1.5-2.5 % above it (now 0.4-0.6 %)
+        sharp = CharpyFrictionModel(**STANDARD)
+        rounded = CharpyFrictionModel(**dict(STANDARD, anvil_radius_m=0.001))
+        self.assertLess(rounded.phi_face, rounded.phi_pass - 1e-3)
+        self.assertAlmostEqual(rounded.phi_pass, sharp.phi_pass, delta=1e-9)
+        loss, lock = rounded.loss(0.0)
+        self.assertIsNone(lock)
+        self.assertAlmostEqual(loss / (rounded.mp * 2 * rounded.phi_pass), 1.0, delta=1e-5)
+
     def test_friction_costs_more_the_more_there_is_and_locks_at_last(self):
         model = CharpyFrictionModel(**STANDARD)
         losses = [model.loss(mu)[0] for mu in (0.0, 0.05, 0.1, 0.25)]
@@ -64,7 +77,8 @@ class FrictionModelTest(unittest.TestCase):
                     self.assertTrue(r["passed_anvils"] and not r["over_the_top"], r)
                     self.assertGreaterEqual(r["energy_loss_J"], r["plastic_work_J"], r)
                     self.assertLess(r["max_penetration_m"], 1e-4, r)
-                    self.assertLess(abs(r["energy_loss_J"] - expected) / expected, 0.03, (mu, r["energy_loss_J"], expected))
+                    # measured +0.40 to +0.63 % (+1.5 to +2.5 % against the model without the corner's slide)
+                    self.assertLess(abs(r["energy_loss_J"] - expected) / expected, 0.015, (mu, r["energy_loss_J"], expected))
 
     def test_coarse_steps_with_the_direct_solve_and_speculative_contacts_match_the_converged_runs(self):
         # issue 25: 0.06 ms contact substeps in 1 ms frames, btDirectJointSolver (two friction rows per contact, patch
@@ -72,7 +86,7 @@ class FrictionModelTest(unittest.TestCase):
         # damped, patch 0039), speculative contacts for the specimen's boxes and the hammer's children (patches 0036,
         # 0040), the halves' slide along the anvils after the fold left to them (SubstepPolicy's speculative reach).
         # Each case is held to its converged run (2 us substeps, 5.2 m/s), which is held to the model (measured +0.3 %
-        # with the sharp anvils, +1.4 to +4.2 % with the ISO anvils, the most at friction 0.25). The loss at coarse
+        # with the sharp anvils, +0.4 to +2.2 % with the ISO anvils, the most at friction 0.25). The loss at coarse
         # steps depends a little on where in a substep the striker meets the specimen, so each case runs at five impact
         # speeds, 5.1-5.3 m/s (the converged loss moves with the speed by at most 0.6 %, 1.4 % and 2.5 % with the ISO
         # anvils at friction 0.2 and 0.25), the median held to 3 % of the converged loss and each run to 6 %. Measured
@@ -94,7 +108,7 @@ class FrictionModelTest(unittest.TestCase):
                 with self.subTest(anvils=anvils, mu=mu):
                     expected, _ = model.loss(mu)
                     reference = run("--geometry=standard", *anvils, f"--friction={mu}", *converged)["energy_loss_J"]
-                    self.assertLess(abs(reference - expected) / expected, 0.05, (mu, reference, expected))
+                    self.assertLess(abs(reference - expected) / expected, 0.03, (mu, reference, expected))
                     errors = []
                     for v in speeds:
                         r = run("--geometry=standard", *anvils, f"--friction={mu}", f"--impact-speed={v}", *coarse)
