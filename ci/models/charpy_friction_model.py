@@ -156,8 +156,8 @@ class CharpyFrictionModel:
 
     def loss(self, mu, steps=4000):
         """(loss J, None) or (None, half angle at which the contacts lock); the rolling and the corner's slide are
-        integrated apart, with as many steps each (the hinge's travel has a kink between them, and its rate grows
-        without bound as the corner reaches the circle's lowest point)"""
+        integrated apart, with as many steps each (the hinge's travel curves differently in each, and its rate
+        grows without bound as the corner reaches the circle's lowest point)"""
         total = 0.0
         for start, end in ((0.0, self.phi_face), (self.phi_face, self.phi_pass)):
             n = steps
