@@ -132,7 +132,8 @@ class CharpyFrictionModel:
         slip_a = velocity(ta)[0] * tangent[0] + velocity(ta)[1] * tangent[1]
         sign_s = math.copysign(1.0, slip_s) if abs(slip_s) > 1e-12 else 0.0
         sign_a = math.copysign(1.0, slip_a) if abs(slip_a) > 1e-12 else 0.0
-        # unit forces on the half per unit normal force: striker -un - mu sign_s ua, anvil +un - mu sign_a ua
+        # unit forces on the half per unit normal force: striker -un - mu sign_s ua, anvil na - mu sign_a tangent (the
+        # back face's normal and direction while it rolls, the circle's at the corner)
         fs = (-un[0] - mu * sign_s * ua[0], -un[1] - mu * sign_s * ua[1])
         fa = (na[0] - mu * sign_a * tangent[0], na[1] - mu * sign_a * tangent[1])
 
