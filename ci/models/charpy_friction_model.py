@@ -76,15 +76,19 @@ class CharpyFrictionModel:
         """z of the half's back corner (its end on the back face)"""
         return self.half_length * math.cos(phi) + self.d * math.sin(phi)
 
-    def _corner_dz(self, phi):
-        return min(self.ra, max(-self.ra, self.corner_z(phi) - self.za))
+    def _rolls(self, phi):
+        return phi <= self.phi_face or self.ra == 0
+
+    def _corner_from_centre(self, phi):
+        """(x, z) of the back corner from the anvil circle's centre while it slides round the circle"""
+        dz = min(self.ra, max(-self.ra, self.corner_z(phi) - self.za))
+        return math.sqrt(self.ra * self.ra - dz * dz), dz
 
     def hinge_x(self, phi):
-        if phi <= self.phi_face or self.ra == 0:
+        if self._rolls(phi):
             return (self.d + self.ra - self.za * math.sin(phi)) / math.cos(phi) - self.ra
-        dz = self._corner_dz(phi)
-        return (math.sqrt(self.ra * self.ra - dz * dz) - self.ra - self.half_length * math.sin(phi)
-                + self.d * math.cos(phi))
+        dx, _ = self._corner_from_centre(phi)
+        return dx - self.ra - self.half_length * math.sin(phi) + self.d * math.cos(phi)
 
     def striker_x(self, phi):
         return self.hinge_x(phi) + (self.front + self.rs) / math.cos(phi)
@@ -95,10 +99,10 @@ class CharpyFrictionModel:
 
     def anvil_normal(self, phi):
         """unit normal of the anvil's force on the half: the back face's while it rolls, the circle's at the corner"""
-        if phi <= self.phi_face or self.ra == 0:
+        if self._rolls(phi):
             return (math.cos(phi), -math.sin(phi))
-        dz = self._corner_dz(phi)
-        return (math.sqrt(self.ra * self.ra - dz * dz) / self.ra, dz / self.ra)
+        dx, dz = self._corner_from_centre(phi)
+        return (dx / self.ra, dz / self.ra)
 
     def _bisect(self, below):
         lo, hi = 0.0, math.pi / 2 - 1e-9
@@ -161,10 +165,9 @@ class CharpyFrictionModel:
         grows without bound as the corner reaches the circle's lowest point)"""
         total = 0.0
         for start, end in ((0.0, self.phi_face), (self.phi_face, self.phi_pass)):
-            n = steps
-            for i in range(n if end > start else 0):
-                p0 = start + (end - start) * i / n
-                p1 = start + (end - start) * (i + 1) / n
+            for i in range(steps if end > start else 0):
+                p0 = start + (end - start) * i / steps
+                p1 = start + (end - start) * (i + 1) / steps
                 pm = (p0 + p1) / 2
                 force = self.resisting_force(pm, mu)
                 if force is None:
