@@ -69,6 +69,14 @@ CharpyVerdict classifyCharpyRun(const CharpyResult& r, std::string* why)
 		verdict = CharpyVerdict::EnergyGain;
 		reason = format("energy rose %.3g J above E0 = %.4g J", r.max_energy_gain_J, r.E0_J);
 	}
+	else if (r.joints_book_work && r.max_booked_excess_J > kEnergyGainFraction * r.E0_J)
+	{
+		// the world's energy plus the plastic work its joints dissipated rose above E0: the joints booked flow that no
+		// force paid for, energy made as surely as a body's
+		verdict = CharpyVerdict::EnergyGain;
+		reason = format("the joints booked %.3g J of plastic work beyond the energy lost (more than 1 %% of E0 = %.4g J)",
+						r.max_booked_excess_J, r.E0_J);
+	}
 	else if (r.impact_speed_m_s > 0 && r.hammer_angle_end_rad < -kHammerThroughAngle_rad &&
 			 r.energy_loss_J < kTunnellingLossFraction * r.analytic_J)
 	{

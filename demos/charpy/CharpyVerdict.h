@@ -11,7 +11,7 @@ enum class CharpyVerdict
 {
 	NotFinite,   // a NaN or infinity in a body state
 	BlowUp,      // a body faster than max(100 m/s, 20 x impact speed) or farther than 20 m from the origin
-	EnergyGain,  // total energy rose more than 1 % of E0 above E0
+	EnergyGain,  // total energy, or total energy plus the plastic work booked, rose more than 1 % of E0 above E0
 	Tunnelling,  // the unbroken specimen got past the anvils bent less than it must be to fit the gap (through
 	             // them), or the hammer swung on past the specimen (more than 0.05 rad) losing less than 5 % of
 	             // Mp * theta_pass: through the specimen, or the specimen through the anvils, without the work
