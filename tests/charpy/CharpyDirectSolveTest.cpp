@@ -10,6 +10,7 @@
 
 #include "CharpyRun.h"
 #include "CharpyScene.h"
+#include "CharpyVerdict.h"
 
 namespace
 {
@@ -48,8 +49,12 @@ CharpyResult runWithoutSubsteps(bool standard, plastic::SolverKind solver, doubl
 // The 21 g halves lie between the 19.5 kg hammer and the anvils. Sequential impulse moves each by its mass over the
 // hammer's per iteration, so at 0.1 ms steps and more its 10 iterations let the hammer push the specimen through the
 // anvils nearly straight. The direct solve holds the specimen at every step up to 1 ms: it folds far enough to fit the
-// gap. Measured (thesis geometry, plastic hinge): plastic work 127.4, 130.6, 126.8, 130.0, 151.6 J at 0.05, 0.1, 0.2,
-// 0.5, 1 ms against the converged 128.9 J; sequential impulse 100.9, 12.5, 0, 0, 0 J.
+// gap. Without substeps the halves sink into the nose and the anvils, and the contacts' correction turns the yielding
+// hinge; since patch 0041 the hinge books that flow only as far as the losses of the call pay for it, so its plastic
+// work is no more than the energy lost. Measured (thesis geometry, plastic hinge): plastic work 120.7, 112.4, 104.0,
+// 114.5, 143.2 J for 129.6, 119.8, 107.1, 115.4, 143.8 J lost at 0.05, 0.1, 0.2, 0.5, 1 ms, against the converged
+// 128.9 J of 132.7 J (before patch 0041 it booked 127.4, 130.6, 126.8, 130.0, 151.6 J: up to 27 J beyond the loss);
+// sequential impulse 100.9, 12.5, 0, 0, 0 J.
 TEST(CharpyDirectSolve, HoldsTheSpecimenWithoutSubstepsAtEveryStepUpToOneMillisecond)
 {
 	const CharpyResult converged = runCharpy(geometry(false));
@@ -63,11 +68,8 @@ TEST(CharpyDirectSolve, HoldsTheSpecimenWithoutSubstepsAtEveryStepUpToOneMillise
 		EXPECT_FALSE(direct.tunnelled) << step;
 		EXPECT_GE(direct.max_bend_rad, direct.min_pass_bend_rad) << step << ": it passed the anvils bent too little to fit the gap";
 		EXPECT_LE(direct.max_energy_gain_J, 0.01 * direct.E0_J) << step;
-		EXPECT_GT(direct.plastic_work_J, 0.9 * converged.plastic_work_J) << step;
-		if (step <= 1e-4)
-		{
-			EXPECT_NEAR(direct.plastic_work_J, converged.plastic_work_J, 0.05 * converged.plastic_work_J) << step;
-		}
+		EXPECT_LE(direct.max_booked_excess_J, 0.01 * direct.E0_J) << step << ": plastic work beyond the energy lost";
+		EXPECT_GT(direct.plastic_work_J, 0.75 * converged.plastic_work_J) << step;
 		if (step >= 1e-4)
 		{
 			const CharpyResult sequential = runWithoutSubsteps(false, plastic::SolverKind::SequentialImpulse, step);
@@ -77,13 +79,14 @@ TEST(CharpyDirectSolve, HoldsTheSpecimenWithoutSubstepsAtEveryStepUpToOneMillise
 	}
 }
 
-// The standard striker (a 2 mm edge at mid-span, 5.2 m/s): the plastic work within 7 % of the converged run at 0.05 and
-// 0.1 ms steps without substeps (measured 124.6 and 126.9 J against 120.0 J; sequential impulse 103.1 and 41.5 J).
-// Without substeps or speculative contacts the halves sink 0.5 and 1.7 mm into the anvils, and the position correction
-// that moves them out (without momentum since patch 0038) also turns the yielding hinge: the joints book that flow,
-// which no energy paid for (the loss is 111.9 and 100.0 J). It was 122.4 and 120.9 J before patch 0038, when the
-// correction's velocity was kept.
-TEST(CharpyDirectSolve, StandardStrikerBooksTheConvergedPlasticWorkAtTenthMillisecondSteps)
+// The standard striker (a 2 mm edge at mid-span, 5.2 m/s) at 0.05 and 0.1 ms steps without substeps or speculative
+// contacts: the halves sink 0.5 and 1.7 mm into the anvils, and the position correction that moves them out (without
+// momentum since patch 0038) also turns the yielding hinge. Before patch 0041 the joints booked that flow, which no
+// energy paid for: 124.6 and 126.9 J of plastic work for 111.9 and 100.0 J lost (converged 120.0 J). Now they book it
+// only as far as the losses of the call pay for it: 105.5 and 93.2 J, and at 0.1 ms the halves get behind the anvils
+// bent 0.48 rad more than the hinge booked, which the verdict calls a specimen that came apart (measured; sequential
+// impulse books 103.1 and 41.5 J).
+TEST(CharpyDirectSolve, StandardStrikerWithoutSubstepsBooksNoPlasticWorkBeyondItsLoss)
 {
 	const CharpyResult converged = runCharpy(geometry(true));
 	for (double step : {5e-5, 1e-4})
@@ -91,26 +94,30 @@ TEST(CharpyDirectSolve, StandardStrikerBooksTheConvergedPlasticWorkAtTenthMillis
 		const CharpyResult direct = runWithoutSubsteps(true, plastic::SolverKind::DirectJoint, step);
 		EXPECT_TRUE(direct.passed_anvils) << step;
 		EXPECT_FALSE(direct.tunnelled) << step;
-		EXPECT_NEAR(direct.plastic_work_J, converged.plastic_work_J, 0.07 * converged.plastic_work_J) << step;
+		EXPECT_LE(direct.plastic_work_J, direct.energy_loss_J) << step;
+		EXPECT_LE(direct.max_booked_excess_J, 0.01 * direct.E0_J) << step;
+		EXPECT_GT(direct.plastic_work_J, 0.7 * converged.plastic_work_J) << step;
 		const CharpyResult sequential = runWithoutSubsteps(true, plastic::SolverKind::SequentialImpulse, step);
 		EXPECT_LT(sequential.plastic_work_J, 0.9 * converged.plastic_work_J) << step;
 	}
+	std::string why;
+	EXPECT_EQ(charpyVerdictName(classifyCharpyRun(runWithoutSubsteps(true, plastic::SolverKind::DirectJoint, 1e-4), &why)), "came-apart") << why;
 }
 
 // Where the direct solve is not yet enough: without substeps or speculative contacts the halves sink 0.4 to 2.1 mm into
 // the anvils and the nose, and the position correction that moves them out (without momentum since patch 0038) also
-// turns the yielding hinge: the joints book that flow, which no energy paid for, so the loss falls below the booked
-// plastic work. The loss is 2 to 19 % under the converged loss between 0.05 and 0.5 ms (measured 129.6, 119.8, 107.1,
-// 115.4 J at 0.05, 0.1, 0.2, 0.5 ms against 132.7 J; issue 25). This pins that the loss never exceeds what the joints
-// and the converged run's contacts together explain, and that it keeps four fifths of the converged loss.
-TEST(CharpyDirectSolve, AtCoarseStepsTheLossIsNoMoreThanTheBookedWorkExplainsAndFourFifthsOfConverged)
+// turns the yielding hinge, for nothing: the loss is 2 to 19 % under the converged loss between 0.05 and 0.5 ms
+// (measured 129.6, 119.8, 107.1, 115.4 J at 0.05, 0.1, 0.2, 0.5 ms against 132.7 J; issue 25). Before patch 0041 the
+// joints booked that flow, and the loss fell below the booked plastic work; now they book it as far as the losses of
+// the call pay for it (120.7, 112.4, 104.0, 114.5 J). This pins that the booked work never exceeds the loss, and that
+// the loss keeps four fifths of the converged loss.
+TEST(CharpyDirectSolve, AtCoarseStepsThePlasticWorkIsNoMoreThanTheLossAndTheLossFourFifthsOfConverged)
 {
 	const CharpyResult converged = runCharpy(geometry(false));
-	const double contactLoss = converged.energy_loss_J - converged.plastic_work_J;  // 3.8 J measured
 	for (double step : {5e-5, 1e-4, 2e-4})
 	{
 		const CharpyResult direct = runWithoutSubsteps(false, plastic::SolverKind::DirectJoint, step);
-		EXPECT_LE(direct.energy_loss_J, direct.plastic_work_J + contactLoss + 0.01 * converged.energy_loss_J) << step;
+		EXPECT_LE(direct.plastic_work_J, direct.energy_loss_J) << step;
 		EXPECT_GT(direct.energy_loss_J, 0.8 * converged.energy_loss_J) << step;
 	}
 }
@@ -125,7 +132,10 @@ TEST(CharpyDirectSolve, AtCoarseStepsTheLossIsNoMoreThanTheBookedWorkExplainsAnd
 // overlapped a half's, and the runs booked up to 7.2 J so (2.96 J in this one; 20 of the 25 ISO runs at friction
 // 0.05-0.25 and 5.1-5.3 m/s over 0.1 J, mostly at the anvils' edges: a review's split left at most 0.10 J with the
 // anvils' children alone and 2.78 J with the hammer's alone), and the same runs with the sharp anvils (boxes) 0.0 to
-// 0.1 J. At 10 us there is nothing to correct (0.0 J).
+// 0.1 J. At 10 us there is nothing to correct (0.0 J). Since patch 0041 the joints book the correction's flow only as
+// far as the losses of the call pay for it: the run without speculative contacts books no excess (0.00 J), and its
+// hinge got behind the anvils bent 0.064 rad more than it booked (measured), where with them the two agree within
+// 1e-5 rad.
 TEST(CharpyDirectSolve, SpeculativeContactsOfCompoundChildrenLeaveNoFlowThatNoForcePaidFor)
 {
 	auto run = [](double anvilRadius_m, double substep_s, bool speculative) {
@@ -142,10 +152,16 @@ TEST(CharpyDirectSolve, SpeculativeContactsOfCompoundChildrenLeaveNoFlowThatNoFo
 		p.speculative_contacts = speculative;
 		return runCharpy(p);
 	};
-	EXPECT_GT(run(0.001, 6e-5, false).max_booked_excess_J, 1.0) << "the correction's flow without speculative contacts";
-	EXPECT_LT(run(0.001, 6e-5, true).max_booked_excess_J, 0.1);
-	EXPECT_LT(run(0, 6e-5, true).max_booked_excess_J, 0.1);
-	EXPECT_LT(run(0.001, 1e-5, true).max_booked_excess_J, 0.01);
+	// the bend the hinge made beyond the rotation it booked, when the specimen got behind the anvils
+	auto unbooked = [](const CharpyResult& r) { return r.pass_end_bend_angle_rad - r.pass_plastic_rotation_rad; };
+	const CharpyResult without = run(0.001, 6e-5, false);
+	EXPECT_GT(unbooked(without), 0.03) << "the correction's flow without speculative contacts";
+	EXPECT_LT(without.max_booked_excess_J, 0.1) << "patch 0041: not booked beyond the loss";
+	for (const CharpyResult& with : {run(0.001, 6e-5, true), run(0, 6e-5, true), run(0.001, 1e-5, true)})
+	{
+		EXPECT_LT(with.max_booked_excess_J, 0.1);
+		EXPECT_LT(std::fabs(unbooked(with)), 1e-3);
+	}
 }
 
 // Speculative box-box contacts (patch 0036, --speculative-contacts): the specimen's halves, the sharp anvils and the flat

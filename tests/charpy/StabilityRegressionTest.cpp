@@ -19,9 +19,7 @@ struct Cell
 	CharpyVerdict expected;
 	// Stable cells: the plastic work the joints book is at most this times the energy lost. The joints book
 	// only what they did at their cap (the plastic hinge its limit row's impulse, the elastic-plastic classes
-	// the forces read back from the solver), so with a converged solver it is a part of the loss. A chain of 8
-	// light parts at 10 iterations is not converged: it books 5.7 % more than it loses (1.02 at 100 iterations
-	// for EP2, report/STABILITY.md).
+	// the forces read back from the solver), so with a converged solver it is a part of the loss.
 	double maxWorkPerLoss = 1.02;
 	// and the run's accuracy (classifyCharpyAccuracy) must be accurate: passed the anvils through the gap, no deep
 	// penetration
@@ -47,22 +45,31 @@ const Cell kCells[] = {
 	{"dt60Hz_plastic_hinge", CharpyMethod::PlasticHinge, [](CharpyParameters& p) { p.dt_s = 1.0 / 60; }, CharpyVerdict::Stable},
 	{"dt60Hz_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.dt_s = 1.0 / 60; }, CharpyVerdict::Stable},
 	{"parts4_plastic_hinge", CharpyMethod::PlasticHinge, [](CharpyParameters& p) { p.parts = 4; }, CharpyVerdict::Stable},
-	{"parts8_elastic_plastic", CharpyMethod::ElasticPlastic, [](CharpyParameters& p) { p.parts = 8; }, CharpyVerdict::Stable, 1.10},
+	// sequential impulse keeps its contacts' Baumgarte correction as velocity, energy no force paid for, and the joints
+	// book the flow it makes: 8 parts book 15.9 J beyond the energy lost, one iteration 3.2 J (more than 1 % of E0, an
+	// energy gain since the verdict counts the booked work; measured). The direct solve moves the correction to the
+	// positions (patch 0038) and books its flow as far as the call's losses pay for it (patch 0041)
+	{"parts8_elastic_plastic", CharpyMethod::ElasticPlastic, [](CharpyParameters& p) { p.parts = 8; }, CharpyVerdict::EnergyGain},
 	// many light parts under the heavy hammer: the chain lets go in the solver, and the joints book no work for it
 	{"parts32_plastic_hinge", CharpyMethod::PlasticHinge, [](CharpyParameters& p) { p.parts = 32; }, CharpyVerdict::CameApart},
 	{"dt1ms_nosub_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.dt_s = 1e-3; p.contact_substep_s = 0; }, CharpyVerdict::CameApart},
 	// the same two with the direct solve (btDirectJointSolver): the chain and the halves are held. At 1 ms steps its
-	// contacts' Baumgarte correction gives back some of the energy: the joints book 151.6 J for 143.7 J lost
+	// contacts' correction turns the yielding joints: they booked 151.6 J for 143.7 J lost before patch 0041, 143.2 J now
 	{"parts32_plastic_hinge_direct", CharpyMethod::PlasticHinge, [](CharpyParameters& p) { p.parts = 32; p.solver = plastic::SolverKind::DirectJoint; }, CharpyVerdict::Stable},
 	{"dt1ms_nosub_elastic_plastic2_direct", CharpyMethod::ElasticPlastic2,
-	 [](CharpyParameters& p) { p.dt_s = 1e-3; p.contact_substep_s = 0; p.solver = plastic::SolverKind::DirectJoint; }, CharpyVerdict::Stable, 1.10},
+	 [](CharpyParameters& p) { p.dt_s = 1e-3; p.contact_substep_s = 0; p.solver = plastic::SolverKind::DirectJoint; }, CharpyVerdict::Stable, 1.0},
 	// direct solve with speculative contacts (patch 0036): 4 and 8 parts pass the anvils through the gap, where the
 	// direct solve alone leaves 4 parts of elastic-plastic2 in front of them (report/STABILITY.md, direct-spec-*)
 	{"parts4_elastic_plastic2_direct_spec", CharpyMethod::ElasticPlastic2,
 	 [](CharpyParameters& p) { p.parts = 4; p.solver = plastic::SolverKind::DirectJoint; p.speculative_contacts = true; }, CharpyVerdict::Stable, 1.02, true},
 	{"parts8_plastic_hinge_direct_spec", CharpyMethod::PlasticHinge,
 	 [](CharpyParameters& p) { p.parts = 8; p.solver = plastic::SolverKind::DirectJoint; p.speculative_contacts = true; }, CharpyVerdict::Stable, 1.02, true},
-	{"iterations1_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.solver_iterations = 1; }, CharpyVerdict::Stable},
+	{"iterations1_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.solver_iterations = 1; }, CharpyVerdict::EnergyGain},
+	{"parts8_elastic_plastic_direct", CharpyMethod::ElasticPlastic, [](CharpyParameters& p) { p.parts = 8; p.solver = plastic::SolverKind::DirectJoint; }, CharpyVerdict::Stable, 1.0},
+	// 16 parts of elastic-plastic under the direct solve booked 209.2 J for 165.2 J lost before patch 0041: the contacts'
+	// correction turned the outer joints' shear, axial and torsion locks (160.9 J now). The specimen still goes over the
+	// anvils (issue 25), so only the energy is checked here
+	{"parts16_elastic_plastic_direct", CharpyMethod::ElasticPlastic, [](CharpyParameters& p) { p.parts = 16; p.solver = plastic::SolverKind::DirectJoint; }, CharpyVerdict::Stable, 1.0},
 	{"stiffE_elastic_plastic2", CharpyMethod::ElasticPlastic2, [](CharpyParameters& p) { p.youngs_modulus_pa = 2000e9; }, CharpyVerdict::Stable},
 	// upstream, as it is: the spring explodes (thesis fig. 3.5), a rigid specimen tunnels at 1/60 s. The exploding
 	// spring's fastest part reaches 98-173 m/s around the 100 m/s blow-up threshold (98 m/s with 800 J above E0 since
