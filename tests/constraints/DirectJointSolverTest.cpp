@@ -501,6 +501,15 @@ CorrectedHinge correctedHinge(double speed_m_s, int steps)
 	r.fallbacks = pair.setup.fallbacks();
 	return r;
 }
+
+// the correction ran in relaxed calls, turned the hinge, and its lock followed
+void expectTheCorrectionTurnedTheLockedHinge(const CorrectedHinge& r)
+{
+	EXPECT_GT(r.relaxed_calls, 0);
+	EXPECT_EQ(0, r.fallbacks);
+	EXPECT_GT(r.turned_rad, 1e-3) << "the correction did not turn the hinge: the scene does not test the lock";
+	EXPECT_LT(r.lock_error_rad, 1e-6) << "the lock left the hinge";
+}
 }  // namespace
 
 // Patch 0038 with a lock whose errors are corrected without momentum (a plastic hinge with split position correction,
@@ -512,10 +521,7 @@ CorrectedHinge correctedHinge(double speed_m_s, int steps)
 TEST(DirectJointSolver, ASplitCorrectedLockFollowsTheFlowTheContactCorrectionMakesWithoutBookingIt)
 {
 	const CorrectedHinge r = correctedHinge(0, 8);
-	EXPECT_GT(r.relaxed_calls, 0);
-	EXPECT_EQ(0, r.fallbacks);
-	EXPECT_GT(r.turned_rad, 1e-3) << "the correction did not turn the hinge: the scene does not test the lock";
-	EXPECT_LT(r.lock_error_rad, 1e-6) << "the lock left the hinge";
+	expectTheCorrectionTurnedTheLockedHinge(r);
 	EXPECT_LT(r.booked_rad, 1e-6 * r.turned_rad) << "the lock booked flow that no force paid for";
 	EXPECT_LT(r.absorbed_j, 1e-12);
 }
@@ -529,10 +535,7 @@ TEST(DirectJointSolver, ASplitCorrectedLockFollowsTheFlowTheContactCorrectionMak
 TEST(DirectJointSolver, TheContactCorrectionsFlowIsBookedAsFarAsTheLossesOfTheCallPayForIt)
 {
 	const CorrectedHinge r = correctedHinge(0.05, 1);
-	EXPECT_GT(r.relaxed_calls, 0);
-	EXPECT_EQ(0, r.fallbacks);
-	EXPECT_GT(r.turned_rad, 1e-3) << "the correction did not turn the hinge: the scene does not test the booking";
-	EXPECT_LT(r.lock_error_rad, 1e-6) << "the lock left the hinge";
+	expectTheCorrectionTurnedTheLockedHinge(r);
 	EXPECT_NEAR(r.booked_rad, r.turned_rad, 0.02 * r.turned_rad) << "the hinge did not book the rotation the call's losses paid for";
 	EXPECT_GT(r.absorbed_j, 0);
 	EXPECT_LE(r.absorbed_j, r.kinetic_lost_j);
