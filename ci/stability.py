@@ -251,7 +251,7 @@ def write_markdown(rows, case_names, path, command):
         if r["method"] not in NEW_METHODS or r.get("failure"):
             continue
         work, loss = float(r["plastic_work_J"]), float(r["energy_loss_J"])
-        if work > 1.05 * max(loss, 0) + 1e-6 or (work == 0 and str(r.get("passed_anvils")) in ("1", "True", "true")):
+        if work > 1.05 * max(loss, 0) + 1e-6 or (work == 0 and r.get("passed_anvils") in ("1", "True")):
             book.append(f"- `{r['key']}`: plastic work {work:.1f} J, energy loss {loss:.1f} J")
     lines += book or ["None."]
     upstream = [r for r in rows if r["method"] not in NEW_METHODS and r.get("verdict") not in ("stable", None)]

@@ -71,6 +71,11 @@ def run_one(runner, configuration, timeout_s, accept_codes=(0,), keep_json=False
     return row
 
 
+def as_csv_text(row):
+    """A row's values as the CSV holds them (text; None empty), so fresh and resumed rows compare alike."""
+    return {k: "" if v is None else str(v) for k, v in row.items()}
+
+
 def journal_path(out_csv):
     """Where run_all appends each finished row (one JSON line) until it writes the CSV whole."""
     return out_csv + ".journal"
@@ -88,12 +93,12 @@ def read_journal(out_csv):
                 row = json.loads(line)
             except ValueError:
                 continue  # the last line of a sweep killed while it wrote
-            rows.append({k: "" if v is None else str(v) for k, v in row.items()})
+            rows.append(as_csv_text(row))
     return rows
 
 
 def run_all(runner, configurations, out_csv, jobs, timeout_s=600, first_columns=("key",), log=sys.stderr, accept_codes=(0,), keep_json=False):
-    """Runs every configuration not yet in out_csv, keeping the finished rows; returns all rows.
+    """Runs every configuration not yet in out_csv, keeping the finished rows; returns all rows, as text (as_csv_text).
 
     Each finished run is appended to out_csv's journal (journal_path: one JSON line, cheap however many rows there
     are) and out_csv is written whole when the sweep ends, so an interrupted sweep loses nothing: the next call takes
@@ -137,4 +142,4 @@ def run_all(runner, configurations, out_csv, jobs, timeout_s=600, first_columns=
         rows.sort(key=lambda r: order[r["key"]])
         csvfile.write_rows(out_csv, rows, first_columns)
         os.remove(journal)
-    return rows
+    return [as_csv_text(r) for r in rows]

@@ -37,6 +37,13 @@ class SweepTest(unittest.TestCase):
         self.assertTrue(all(r["energy_loss_J"] for r in written))
         self.assertFalse(os.path.exists(out + ".tmp"))
 
+    def test_fresh_rows_are_the_rows_a_resumed_sweep_returns(self):
+        # the runner's booleans come back as ints from a fresh run and as text from the CSV; callers see text either way
+        out = os.path.join(self.dir, "sweep.csv")
+        fresh = runner.run_all(FAKE, self.configurations[:2], out, jobs=1, log=open(os.devnull, "w"))
+        resumed = runner.run_all(FAKE, self.configurations[:2], out, jobs=1, log=open(os.devnull, "w"))
+        self.assertEqual(fresh, resumed)
+
     def test_resume_keeps_finished_rows_and_runs_only_the_rest(self):
         out = os.path.join(self.dir, "sweep.csv")
         runner.run_all(FAKE, self.configurations[:2], out, jobs=1, log=open(os.devnull, "w"))
