@@ -74,6 +74,12 @@ CASES = {
     "direct-spec-parts8": ("8 parts, direct solver, speculative contacts", ["--solver=direct", "--speculative-contacts", "--parts=8"]),
     "direct-spec-parts16": ("16 parts, direct solver, speculative contacts", ["--solver=direct", "--speculative-contacts", "--parts=16"]),
     "direct-spec-parts32": ("32 parts, direct solver, speculative contacts", ["--solver=direct", "--speculative-contacts", "--parts=32"]),
+    # an edge of a box lying nearly across a face touches it at both ends (patch 0042, opt-in)
+    "direct-edges-parts8": ("8 parts, direct solver, box edges across faces", ["--solver=direct", "--box-edges-across-faces", "--parts=8"]),
+    "direct-edges-parts16": ("16 parts, direct solver, box edges across faces", ["--solver=direct", "--box-edges-across-faces", "--parts=16"]),
+    "direct-edges-parts32": ("32 parts, direct solver, box edges across faces", ["--solver=direct", "--box-edges-across-faces", "--parts=32"]),
+    "direct-spec-edges-parts16": ("16 parts, direct solver, speculative contacts, box edges across faces",
+                                  ["--solver=direct", "--speculative-contacts", "--box-edges-across-faces", "--parts=16"]),
 }
 DOUBLE_CASES = {
     "double": ("default scene, BT_USE_DOUBLE_PRECISION build", []),

@@ -83,7 +83,8 @@ CharpyCommandLine parseCharpyCommandLine(const std::vector<std::string>& argumen
 	{
 		if (scene::takeSwitch(flag,
 							  {{"help", &cl.help}, {"list-methods", &cl.listMethods}, {"json", &cl.json}, {"auto-dt", &cl.parameters.auto_dt},
-							   {"full-duration", &fullDuration}, {"speculative-contacts", &cl.parameters.speculative_contacts}},
+							   {"full-duration", &fullDuration}, {"speculative-contacts", &cl.parameters.speculative_contacts},
+							   {"box-edges-across-faces", &cl.parameters.box_edges_across_faces}},
 							  cl.errors) ||
 			scene::takePath(flag, "history", cl.historyPath, cl.errors))
 			continue;
@@ -109,12 +110,14 @@ CharpyCommandLine parseCharpyCommandLine(const std::vector<std::string>& argumen
 std::string charpyUsage()
 {
 	std::string text =
-		"usage: charpy [--method=NAME] [--geometry=standard|thesis] [--json] [--history=FILE.csv] [--auto-dt] [--full-duration] [--speculative-contacts] [--list-methods] [flags]\n"
+		"usage: charpy [--method=NAME] [--geometry=standard|thesis] [--json] [--history=FILE.csv] [--auto-dt] [--full-duration] [--speculative-contacts] [--box-edges-across-faces] [--list-methods] [flags]\n"
 		"Runs the Charpy impact test scene headless and prints the energy balance. The test ends once the specimen is clear\n"
 		"(every part behind the anvils, none able to touch an anvil within a frame), or at --duration;\n"
 		"  --full-duration      runs to --duration even after the specimen is clear\n"
 		"  --speculative-contacts  box pairs touch before they overlap (patch 0036), so parts do not sink in at coarse steps;\n"
 		"                       a step in which the hammer closes more than their reach is warned about (predicted from the settings)\n"
+		"  --box-edges-across-faces  an edge of a box lying nearly across another's face touches it at both ends (patch 0042),\n"
+		"                       not at its deeper end alone as upstream has it\n"
 		"  --geometry=thesis    (default) the thesis' scene: a flat striker nose as thick as the hammer, released from 2.8 rad\n"
 		"  --geometry=standard  the standard machine's striker (ISO 148-1): a 2 mm edge at mid-span, 5.2 m/s\n";
 	return text + scene::usageOf(valueFlags());

@@ -236,6 +236,7 @@ void CharpyScene::createWorld()
 	m_world->setGravity(btVector3(0, btScalar(-kGravity_m_s2), 0));
 	m_world->getSolverInfo().m_numIterations = m_parameters.solver_iterations;
 	m_world->getDispatchInfo().m_speculativeBoxBoxContacts = m_parameters.speculative_contacts;
+	m_world->getDispatchInfo().m_boxBoxEdgesAcrossFaces = m_parameters.box_edges_across_faces;
 }
 
 void CharpyScene::createAnvils()
