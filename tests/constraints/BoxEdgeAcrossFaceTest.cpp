@@ -10,23 +10,10 @@
 
 #include "btBulletDynamicsCommon.h"
 #include "BulletCollision/CollisionDispatch/btBoxBoxDetector.h"
+#include "DetectedPoints.h"
 
 namespace
 {
-struct Points : public btDiscreteCollisionDetectorInterface::Result
-{
-	std::vector<btVector3> normals, points;
-	std::vector<double> distances;
-	void setShapeIdentifiersA(int, int) override {}
-	void setShapeIdentifiersB(int, int) override {}
-	void addContactPoint(const btVector3& normalOnBInWorld, const btVector3& pointInWorld, btScalar depth) override
-	{
-		normals.push_back(normalOnBInWorld);
-		points.push_back(pointInWorld);
-		distances.push_back(double(depth));
-	}
-};
-
 const double kHalfWidth_m = 0.005;  // the part's half width along the edge (world Y)
 
 // A: a static box whose edge along Y lies at x = 0, z = 0 (the box fills x < 0, z > 0). B: a 10 x 10 x 3.4 mm part (its
@@ -45,7 +32,7 @@ struct EdgeOnFace
 		faceNormal = b.getBasis() * btVector3(-1, 0, 0);
 		b.setOrigin(-faceNormal * btScalar(kHalfWidth_m - depth_m));
 	}
-	Points detect(bool edgesAcrossFaces) const
+	DetectedPoints detect(bool edgesAcrossFaces) const
 	{
 		btBoxShape boxA(btVector3(0.01f, 0.02f, 0.01f)), boxB(btVector3(0.005f, 0.005f, 0.0017f));
 		btBoxBoxDetector detector(&boxA, &boxB);
@@ -53,7 +40,7 @@ struct EdgeOnFace
 		btDiscreteCollisionDetectorInterface::ClosestPointInput input;
 		input.m_transformA = a;
 		input.m_transformB = b;
-		Points out;
+		DetectedPoints out;
 		detector.getClosestPoints(input, out, nullptr);
 		return out;
 	}
@@ -66,11 +53,11 @@ TEST(BoxEdgeAcrossFace, ATwistedPartTouchesTheEdgeAtBothEndsAsDeepAsTheTwistMake
 	for (double bend : {0.2, 0.5, 0.8})
 	{
 		const EdgeOnFace pair(bend, twist, depth);
-		const Points upstream = pair.detect(false);
+		const DetectedPoints upstream = pair.detect(false);
 		ASSERT_EQ(1u, upstream.points.size()) << "upstream's detector picks the edge pair here (bend " << bend << ")";
 		EXPECT_NEAR(kHalfWidth_m, std::fabs(upstream.points[0].y()), 1e-6);
 
-		const Points both = pair.detect(true);
+		const DetectedPoints both = pair.detect(true);
 		ASSERT_EQ(2u, both.points.size()) << "bend " << bend;
 		// the face turned by the twist about the part's axis: at y the edge is depth + twist * y (the sign by which end
 		// the twist lowers) into it
@@ -92,7 +79,7 @@ TEST(BoxEdgeAcrossFace, AnEdgeFarFromAcrossTheFaceIsAsUpstreamHasIt)
 	for (double bend : {0.2, 0.5})
 	{
 		const EdgeOnFace pair(bend, 0.2, 2e-5);
-		const Points upstream = pair.detect(false), both = pair.detect(true);
+		const DetectedPoints upstream = pair.detect(false), both = pair.detect(true);
 		ASSERT_EQ(upstream.points.size(), both.points.size());
 		for (size_t i = 0; i < both.points.size(); i++)
 		{

@@ -13,26 +13,12 @@
 
 #include "btBulletDynamicsCommon.h"
 #include "BulletCollision/CollisionDispatch/btBoxBoxDetector.h"
+#include "DetectedPoints.h"
 
 namespace
 {
-// Collects what a detector reports.
-struct Points : public btDiscreteCollisionDetectorInterface::Result
-{
-	std::vector<btVector3> normals, points;
-	std::vector<double> distances;
-	void setShapeIdentifiersA(int, int) override {}
-	void setShapeIdentifiersB(int, int) override {}
-	void addContactPoint(const btVector3& normalOnBInWorld, const btVector3& pointInWorld, btScalar depth) override
-	{
-		normals.push_back(normalOnBInWorld);
-		points.push_back(pointInWorld);
-		distances.push_back(double(depth));
-	}
-};
-
 // box A (half extents a) at the origin, box B (half extents b) turned by `turn` and placed at `position`
-Points detect(const btVector3& a, const btVector3& b, const btQuaternion& turn, const btVector3& position, double maxSeparation)
+DetectedPoints detect(const btVector3& a, const btVector3& b, const btQuaternion& turn, const btVector3& position, double maxSeparation)
 {
 	btBoxShape boxA(a), boxB(b);
 	btBoxBoxDetector detector(&boxA, &boxB);
@@ -42,7 +28,7 @@ Points detect(const btVector3& a, const btVector3& b, const btQuaternion& turn, 
 	input.m_transformB.setIdentity();
 	input.m_transformB.setRotation(turn);
 	input.m_transformB.setOrigin(position);
-	Points out;
+	DetectedPoints out;
 	detector.getClosestPoints(input, out, nullptr);
 	return out;
 }
@@ -58,7 +44,7 @@ TEST(SpeculativeBoxContacts, FacesApartAreReportedWithTheirGapOnlyWithinTheSepar
 		const btVector3 above(0.001f, btScalar(0.01 + gap), -0.002f);
 		EXPECT_TRUE(detect(plate, cube, none, above, 0.0).distances.empty()) << "apart boxes are no contact by default";
 		EXPECT_TRUE(detect(plate, cube, none, above, gap / 2).distances.empty()) << "beyond the separation: none";
-		const Points p = detect(plate, cube, none, above, 2 * gap);
+		const DetectedPoints p = detect(plate, cube, none, above, 2 * gap);
 		ASSERT_EQ(p.distances.size(), 4u) << "the cube's bottom face: four corners";
 		for (size_t i = 0; i < p.distances.size(); i++)
 		{
@@ -70,7 +56,7 @@ TEST(SpeculativeBoxContacts, FacesApartAreReportedWithTheirGapOnlyWithinTheSepar
 		}
 	}
 	// overlapping boxes are reported as before: depth negative
-	const Points deep = detect(plate, cube, none, btVector3(0, 0.0099f, 0), 0.001);
+	const DetectedPoints deep = detect(plate, cube, none, btVector3(0, 0.0099f, 0), 0.001);
 	ASSERT_FALSE(deep.distances.empty());
 	for (double d : deep.distances) EXPECT_NEAR(d, -0.0001, 1e-7);
 }
@@ -95,12 +81,12 @@ TEST(SpeculativeBoxContacts, CrossedEdgesApartAreReportedAtTheirDistance)
 		input.m_transformB.setIdentity();
 		input.m_transformB.setRotation(btQuaternion(btVector3(0, 0, 1), btScalar(M_PI / 4)) * btQuaternion(btVector3(0, 1, 0), btScalar(M_PI / 2)));
 		input.m_transformB.setOrigin(btVector3(0, btScalar(2 * edge + gap), 0));
-		Points out;
+		DetectedPoints out;
 		detector.getClosestPoints(input, out, nullptr);
 		ASSERT_EQ(out.distances.size(), 1u) << "gap " << gap;
 		EXPECT_NEAR(out.distances[0], gap, 2e-6) << "gap " << gap;
 		EXPECT_NEAR(std::fabs(double(out.normals[0].y())), 1.0, 1e-5);
-		Points none;
+		DetectedPoints none;
 		detector.m_maximumSeparation = btScalar(gap / 2);
 		detector.getClosestPoints(input, none, nullptr);
 		EXPECT_TRUE(none.distances.empty());
@@ -146,7 +132,7 @@ TEST(SpeculativeBoxContacts, EveryPointReportedIsOnBothBoxes)
 		btDiscreteCollisionDetectorInterface::ClosestPointInput input;
 		input.m_transformA = poseA;
 		input.m_transformB = poseB;
-		Points out;
+		DetectedPoints out;
 		detector.getClosestPoints(input, out, nullptr);
 		for (size_t i = 0; i < out.distances.size(); i++)
 		{
