@@ -67,8 +67,10 @@ struct CharpyParameters
 	// another's face (a part's edge on the striker's or an anvil's face, the hammer swinging about the specimen's
 	// axis) touches it at both ends; Bullet's detector gives one point at the deeper end, and the part's torque about
 	// its axis went into its joints (13 J of torsion booked by elastic-plastic in 16 parts). Off by default: with
-	// friction 0.25 at coarse steps it loses more (the standard striker at 0.06 ms: 191.3 -> 194.3 J on average over
-	// 5.1-5.3 m/s, one run jammed at 260.8 J, against 188.4 J converged), which is not yet understood
+	// friction 0.25 the standard striker loses more with it, at 0.06 ms steps 191.4 -> 193.8 J on average over
+	// 5.1-5.3 m/s against 188.4 J converged (without it the halves sink 0.2-0.3 mm into the anvils and the correction's
+	// gain offsets the coarse steps' friction excess), and by default (sequential impulse, 0.01 ms) 190.4 -> 193.9 J,
+	// where a dropped point that carried the load still kicks the halves
 	bool box_edges_across_faces = false;
 	// Bullet's own continuous collision detection on the specimen's parts (btCollisionObject::setCcdMotionThreshold and
 	// setCcdSweptSphereRadius): a part whose centre moves more than the threshold in a step is swept as a sphere of that
