@@ -186,6 +186,75 @@ def fmt(value, pattern):
     return "" if value is None else pattern.format(value)
 
 
+# issue 25's measure: the fewest internal steps of a whole test within this much of its method's converged loss
+STEPS_TARGET_ERROR_PCT = 5.0
+STEPS_TARGET = 100
+# the frame steps issue 25 names (0.1 ms to 1/60 s) and --auto-dt, as the sweep's dt_ms column writes them
+STEPS_FRAME_STEPS = ("0.1", "0.2", "0.5", "1", "2", "5", "16.7", "auto")
+
+
+def settings_of(row):
+    """A run's solver, contacts, iterations and contact substep, as a short text."""
+    sub = float(row.get("contact_substep_s") or 0)
+    parts = ["direct" if solver_of(row) == DIRECT else "SI"] + (["speculative"] if speculative(row) else [])
+    parts.append(f"{float(sub) * 1000:g} ms" if sub > 0 else "no substeps")
+    if row.get("iterations") != DEFAULT_ITERATIONS:
+        parts.append(f"{row.get('iterations')} it")
+    return ", ".join(parts)
+
+
+def fewest_steps(rows, converged, peer=()):
+    """Markdown: per plastic method and frame step, the run with the fewest internal steps whose loss is within
+    STEPS_TARGET_ERROR_PCT of its method's converged loss (every solver and contact setting the sweep ran), and the
+    MuJoCo peer's run with the fewest steps within as much of its own converged loss."""
+    frame = lambda r: "auto" if r.get("auto_dt") == "1" else r.get("dt_ms")  # noqa: E731
+    methods = [m for m in METHOD_ORDER if m in PLASTIC_METHODS and any(r["method"] == m for r in rows)]
+    frames = [f for f in STEPS_FRAME_STEPS if any(frame(r) == f and not is_reference(r) for r in rows)]
+    best = {}
+    for r in rows:
+        if r.get("failure") or is_reference(r) or r["method"] not in methods or frame(r) not in frames:
+            continue
+        e, n = discretisation_error(r, converged), number(r, "steps")
+        if e is None or n is None or abs(e) > STEPS_TARGET_ERROR_PCT or r.get("accuracy", "accurate") != "accurate":
+            continue
+        key = (r["method"], frame(r))
+        if key not in best or (n, abs(e)) < (number(best[key], "steps"), abs(discretisation_error(best[key], converged))):
+            best[key] = r
+    peer_ref = peer_report.converged(peer)
+    peer_best = {}
+    for r in peer:
+        e, n = peer_report.discretisation_error(r, peer_ref), number(r, "steps")
+        if r.get("diverged") == "1" or r.get("passed_anvils") != "1" or e is None or n is None or abs(e) > STEPS_TARGET_ERROR_PCT:
+            continue
+        if r.get("dt_ms") in frames and (r["dt_ms"] not in peer_best or n < number(peer_best[r["dt_ms"]], "steps")):
+            peer_best[r["dt_ms"]] = r
+    cell = lambda r: (f"{int(number(r, 'steps'))} ({settings_of(r)}, {discretisation_error(r, converged):+.1f} %)"  # noqa: E731
+                      if r else "none")
+    lines = ["| frame step [ms] | " + " | ".join(methods) + (" | MuJoCo peer |" if peer else " |"),
+             "|---" * (len(methods) + 1 + (1 if peer else 0)) + "|"]
+    for f in frames:
+        cells = [cell(best.get((m, f))) for m in methods]
+        if peer:
+            r = peer_best.get(f)
+            cells.append(f"{int(number(r, 'steps'))} ({peer_report.discretisation_error(r, peer_ref):+.1f} %)" if r else
+                         ("none" if any(x.get("dt_ms") == f for x in peer) else "not run"))
+        lines.append(f"| {f} | " + " | ".join(cells) + " |")
+    found = [r for r in best.values()]
+    met = sum(number(r, "steps") <= STEPS_TARGET for r in found)
+    total = len(methods) * len(frames)
+    text = (f"{met} of these {total} cells (method x frame step) have a run within {STEPS_TARGET_ERROR_PCT:g} % in at most "
+            f"{STEPS_TARGET} internal steps; {total - len(found)} have no run within {STEPS_TARGET_ERROR_PCT:g} %.")
+    peer_any = [r for r in peer if r.get("diverged") != "1" and r.get("passed_anvils") == "1" and r is not peer_ref
+                and number(r, "steps") and peer_report.discretisation_error(r, peer_ref) is not None
+                and abs(peer_report.discretisation_error(r, peer_ref)) <= STEPS_TARGET_ERROR_PCT]
+    if peer_any:
+        r = min(peer_any, key=lambda x: number(x, "steps"))
+        text += (f" The peer's fewest steps within {STEPS_TARGET_ERROR_PCT:g} % of its converged run, at any frame step: "
+                 f"{int(number(r, 'steps'))} at {r['dt_ms']} ms ({peer_report.discretisation_error(r, peer_ref):+.1f} %; its "
+                 f"steps cover the whole {number(r, 'steps') * number(r, 'dt_ms'):g} ms run, ours end when the specimen is clear).")
+    return "\n".join(lines) + "\n\n" + text
+
+
 def report(rows, out_dir, command, source="the sweep CSV", peer=()):
     os.makedirs(out_dir, exist_ok=True)
     png = os.path.join(out_dir, "charpy-error-vs-runtime.png")
@@ -195,6 +264,7 @@ def report(rows, out_dir, command, source="the sweep CSV", peer=()):
     references = [r for r in rows if is_reference(r)]
     direct = [r for r in rows if solver_of(r) == DIRECT and not speculative(r) and not is_reference(r)]
     spec = [r for r in rows if solver_of(r) == DIRECT and speculative(r) and not is_reference(r)]
+    every = rows
     rows = [r for r in rows if solver_of(r) == "sequential-impulse"]
     base = [r for r in rows if r.get("iterations") == DEFAULT_ITERATIONS and r.get("contact_substep_s") == DEFAULT_SUBSTEP]
     double = [r for r in rows if r.get("iterations") == DEFAULT_ITERATIONS and r.get("contact_substep_s") == "2e-05"]
@@ -286,7 +356,16 @@ setting; internal steps are the whole test's, to the end the runner finds):
 
 | run | wall time [s] | internal steps | abs discretisation error [%] |
 |---|---|---|---|
-""" + "\n".join(f"| `{k}` | {t:.4f} | {by_key.get(k, {}).get('steps', '')} | {e:.2f} |" for t, e, k in front) + peer_report.section(peer, rows) + f"""
+""" + "\n".join(f"| `{k}` | {t:.4f} | {by_key.get(k, {}).get('steps', '')} | {e:.2f} |" for t, e, k in front) + f"""
+
+Fewest internal steps (issue 25's measure: internal steps are deterministic, wall time on this machine is not): for
+each plastic method and frame step, the run of the sweep with the fewest internal steps for the whole test whose loss
+is within {STEPS_TARGET_ERROR_PCT:g} % of its method's converged loss and which passes the anvils (`accuracy`
+accurate), with its settings (SI = sequential impulse; direct = `--solver=direct`; speculative =
+`--speculative-contacts`; the contact substep) and its discretisation error. The MuJoCo peer (below; no substeps,
+its timestep is the frame step) beside it, against its own converged run:
+
+{fewest_steps(every, converged, peer)}""" + peer_report.section(peer, every, converged) + f"""
 
 ## Convergence of the contact substep (10 iterations, frame step 0.1 ms)
 

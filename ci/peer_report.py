@@ -47,8 +47,15 @@ def plot_series(ax, peer):
                s=40, marker="x", color="k", label=f"MuJoCo {version} peer (hinge frictionloss = Mp)")
 
 
-def section(peer, ours):
-    """Markdown: the peer beside our plastic-hinge method, per frame step (10 iterations)."""
+# the new-method runs beside the peer: the direct solve with speculative contacts at this contact substep [s], as the
+# sweep's contact_substep_s column writes it
+COARSE_SUBSTEP = "6e-05"
+
+
+def section(peer, ours, ours_converged=None):
+    """Markdown: the peer beside our plastic-hinge method, per frame step (10 iterations): the default (sequential
+    impulse, 0.01 ms contact substeps), the direct solve with speculative contacts at COARSE_SUBSTEP, and sequential
+    impulse without substeps. ours_converged (method -> its converged row) gives our runs' discretisation error."""
     if not peer:
         return ""
     ref = converged(peer)
@@ -57,22 +64,32 @@ def section(peer, ours):
     our_analytic = next((number(r, "analytic_J") for r in ours if number(r, "analytic_J")), None)
     f = lambda v, pattern: "" if v is None else pattern.format(v)  # noqa: E731
     mm = lambda column: f(1000 * number(peer[0], column) if number(peer[0], column) is not None else None, "{:g}")  # noqa: E731
-    pick = lambda dt, sub: next((r for r in ours if r.get("method") == "plastic-hinge" and r.get("dt_ms") == dt  # noqa: E731
-                                 and r.get("iterations") == "10" and r.get("contact_substep_s") == sub), None)
+    pick = lambda dt, sub, solver="", contacts="": next((r for r in ours if r.get("method") == "plastic-hinge"  # noqa: E731
+                                                         and r.get("dt_ms") == dt and r.get("iterations") == "10"
+                                                         and r.get("contact_substep_s") == sub and r.get("reference") != "1"
+                                                         and (r.get("solver") or "") in ((solver,) if solver else ("", "sequential-impulse"))
+                                                         and (r.get("contacts") or "") == contacts), None)
+    ours_ref = (ours_converged or {}).get("plastic-hinge")
+    disc = lambda r: discretisation_error(r, ours_ref) if r and ours_ref else None  # noqa: E731
     lines = ["| frame step [ms] | peer loss [J] | peer hinge work [J] | peer error vs analytic [%] | peer discretisation error [%] "
-             "| peer wall [s] | peer passed | ours (plastic-hinge) loss [J] | ours wall [s] | ours without substeps: loss [J] | wall [s] |",
-             "|" + "---|" * 11]
+             "| peer steps | peer wall [s] | peer passed | ours (plastic-hinge) loss [J] | steps | wall [s] "
+             f"| ours direct, speculative, {float(COARSE_SUBSTEP) * 1000:g} ms: loss [J] | discretisation error [%] | steps | wall [s] "
+             "| ours without substeps: loss [J] | wall [s] |",
+             "|" + "---|" * 17]
     for r in sorted((r for r in peer if r.get("iterations") == "10"), key=lambda r: number(r, "dt_ms")):
         diverged = r.get("diverged") == "1"
         passed = "diverged (reset)" if diverged else ("over the top" if r.get("over_the_top") == "1" else
                                                       ("yes" if r.get("passed_anvils") == "1" else "no"))
         a, b = pick(r["dt_ms"], "1e-05"), pick(r["dt_ms"], "0")
+        c = pick(r["dt_ms"], COARSE_SUBSTEP, "direct", "speculative")
+        col = lambda row, column, pattern: f(number(row, column) if row else None, pattern)  # noqa: E731
         lines.append(
             f"| {r['dt_ms']} | {f(number(r, 'energy_loss_J'), '{:.1f}')} | {f(number(r, 'plastic_work_J'), '{:.1f}')} "
             f"| {f(number(r, 'error_pct'), '{:+.1f}')} | {'' if diverged else f(discretisation_error(r, ref), '{:+.2f}')} "
-            f"| {f(number(r, 'wall_s'), '{:.4f}')} | {passed} | {f(number(a, 'energy_loss_J') if a else None, '{:.1f}')} "
-            f"| {f(number(a, 'wall_s') if a else None, '{:.4f}')} | {f(number(b, 'energy_loss_J') if b else None, '{:.1f}')} "
-            f"| {f(number(b, 'wall_s') if b else None, '{:.4f}')} |")
+            f"| {col(r, 'steps', '{:.0f}')} | {f(number(r, 'wall_s'), '{:.4f}')} | {passed} "
+            f"| {col(a, 'energy_loss_J', '{:.1f}')} | {col(a, 'steps', '{:.0f}')} | {col(a, 'wall_s', '{:.4f}')} "
+            f"| {col(c, 'energy_loss_J', '{:.1f}')} | {f(disc(c), '{:+.1f}')} | {col(c, 'steps', '{:.0f}')} | {col(c, 'wall_s', '{:.4f}')} "
+            f"| {col(b, 'energy_loss_J', '{:.1f}')} | {col(b, 'wall_s', '{:.4f}')} |")
     by_key = {(r["dt_ms"], r["iterations"]): number(r, "energy_loss_J") for r in peer}
     diffs = [abs(v - by_key[(dt, "10")]) for (dt, it), v in by_key.items()
              if it != "10" and v is not None and by_key.get((dt, "10")) is not None]

@@ -132,6 +132,33 @@ class ReportTest(unittest.TestCase):
         # the fake runner's loss at 1 ms is 127.4 * 1.01 = 128.7 J
         self.assertIn("128.7", text)
 
+    def test_fewest_steps_takes_the_cheapest_run_within_5_percent_that_passes(self):
+        # issue 25's table: per method and frame step, the fewest internal steps within 5 % of the converged loss
+        def row(key, loss, steps, dt_ms="1", accuracy="accurate", **extra):
+            return dict(dict(key=key, method="plastic-hinge", dt_ms=dt_ms, auto_dt="0", iterations="10", solver="direct",
+                             contacts="speculative", reference="", contact_substep_s="6e-05", energy_loss_J=str(loss),
+                             steps=str(steps), accuracy=accuracy), **extra)
+        ref = row("ref", 100.0, 5000, dt_ms="0.1", reference="1", contact_substep_s="2e-06")
+        rows = [ref,
+                row("cheap-but-off", 106.0, 20),             # +6 %: outside
+                row("cheap-but-stuck", 101.0, 25, accuracy="did-not-pass"),
+                row("within", 104.9, 46),                    # the one
+                row("within-dearer", 100.5, 263, contact_substep_s="1e-05"),
+                row("sixty", 104.0, 120, dt_ms="16.7")]
+        peer = [dict(key="p1", method="mujoco", dt_ms="0.01", iterations="50", energy_loss_J="125.0", steps="6000",
+                     passed_anvils="1", diverged="0"),
+                dict(key="p2", method="mujoco", dt_ms="1", iterations="10", energy_loss_J="100.0", steps="60",
+                     passed_anvils="1", diverged="0"),
+                dict(key="p3", method="mujoco", dt_ms="0.05", iterations="10", energy_loss_J="127.0", steps="1200",
+                     passed_anvils="1", diverged="0")]
+        converged = {"plastic-hinge": ref}
+        text = charpy_report.fewest_steps(rows, converged, peer)
+        self.assertIn("| 1 | 46 (direct, speculative, 0.06 ms, +4.9 %) | none |", text)
+        self.assertIn("| 16.7 | 120 (direct, speculative, 0.06 ms, +4.0 %) | not run |", text)
+        self.assertNotIn("| 0.1 |", text)  # the reference run is no frame step of the table
+        self.assertIn("1 of these 2 cells", text)
+        self.assertIn("1200 at 0.05 ms (+1.6 %", text)
+
     def test_pareto_front_keeps_only_unbeaten_points(self):
         front = charpy_report.pareto_front([(1, 10, "a"), (2, 5, "b"), (3, 7, "c"), (4, 1, "d")])
         self.assertEqual([p[2] for p in front], ["a", "b", "d"])
