@@ -61,7 +61,12 @@ struct CharpyParameters
 	plastic::SolverKind solver = plastic::SolverKind::SequentialImpulse;
 	// btDispatcherInfo::m_speculativeBoxBoxContacts (patch 0036): box pairs (the specimen's parts, the sharp anvils, the
 	// flat nose) get contacts before they overlap, within the contact breaking threshold, so a part that meets a face
-	// within a step stops at it instead of sinking in and being pushed out by the contacts' position correction
+	// within a step stops at it instead of sinking in and being pushed out by the contacts' position correction.
+	// With them, a part's edge across a face touches it at both ends (box_edges_across_faces, whatever that says: a
+	// part that speculative contacts stop rests a micrometre off an anvil's edge, where Bullet's detector picks the
+	// edge pair by a hair and the manifold drops the point that carries the load, which jammed the standard striker's
+	// specimen), and the world is stepped to the time a part and an anvil or the hammer touch
+	// (plastic::timeToTouch_s), so that a contact's first step starts touching
 	bool speculative_contacts = false;
 	// btDispatcherInfo::m_boxBoxEdgesAcrossFaces (patch 0042): an edge of a box lying within 5 degrees of across
 	// another's face (a part's edge on the striker's or an anvil's face, the hammer swinging about the specimen's

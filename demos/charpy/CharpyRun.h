@@ -15,7 +15,7 @@ struct CharpyResult
 	std::string solver;        // plastic::solverKindName of the parameters' solver
 	int solver_fallbacks = 0;  // internal steps in which a direct or MLCP solver fell back to sequential impulse
 	bool speculative_contacts = false;  // the parameters' speculative_contacts
-	bool box_edges_across_faces = false;  // the parameters' box_edges_across_faces
+	bool box_edges_across_faces = false;  // whether the world clips edges across faces (box_edges_across_faces or speculative_contacts)
 	long frames = 0;
 	long internal_steps = 0;
 	double kinetic_against_hammer_J = 0;  // CharpyScene::kineticAgainstHammer_j at the end

@@ -236,7 +236,7 @@ void CharpyScene::createWorld()
 	m_world->setGravity(btVector3(0, btScalar(-kGravity_m_s2), 0));
 	m_world->getSolverInfo().m_numIterations = m_parameters.solver_iterations;
 	m_world->getDispatchInfo().m_speculativeBoxBoxContacts = m_parameters.speculative_contacts;
-	m_world->getDispatchInfo().m_boxBoxEdgesAcrossFaces = m_parameters.box_edges_across_faces;
+	m_world->getDispatchInfo().m_boxBoxEdgesAcrossFaces = m_parameters.box_edges_across_faces || m_parameters.speculative_contacts;
 }
 
 void CharpyScene::createAnvils()
@@ -526,6 +526,13 @@ bool CharpyScene::nearContact(double horizon_s) const
 		   plastic::mayTouchWithin(m_contactMovers, m_contactOthers, horizon_s, nearClearance_m(m_parameters), speculativeReach_m());
 }
 
+double CharpyScene::timeToTouch_s(double horizon_s) const
+{
+	// a pair within 1 % of the speculative reach touches
+	SpecimenLengthScale scale(m_parameters.specimen_width_m);
+	return plastic::timeToTouch_s(m_contactMovers, m_contactOthers, horizon_s, 0.01 * speculativeReach_m());
+}
+
 void CharpyScene::step()
 {
 	const CharpyParameters& p = m_parameters;
@@ -546,9 +553,16 @@ void CharpyScene::step()
 			frame = std::max(frame, std::min(coarse, p.duration_s - m_time_s - m_substeps.owed_s()));
 		}
 	}
+	// with speculative contacts the striker's first step on the specimen, and a part's on an anvil or the hammer, starts
+	// touching (plastic::timeToTouch_s): met within a step, the contact carries the section's collapse load across the gap
+	plastic::ContactSubstepPolicy::TimeToTouch timeToTouch;
+	if (p.speculative_contacts)
+	{
+		timeToTouch = [this](double horizon_s) { return this->timeToTouch_s(horizon_s); };
+	}
 	m_substeps.advance(
 		frame, [this](double horizon_s) { return nearContact(horizon_s); }, [this](double h_s) { internalStep(h_s); },
-		[this] { return fastestSpin_rad_s(); });
+		[this] { return fastestSpin_rad_s(); }, timeToTouch);
 	m_lastFrameStep_s = frame;
 }
 

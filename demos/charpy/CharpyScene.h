@@ -107,6 +107,8 @@ private:
 	// contacts, a part within their reach counts only while it is pressed against an anvil or can move half the
 	// reach, or a joint works
 	bool nearContact(double horizon_s) const;
+	// when the first part now apart from an anvil or the hammer touches it, within horizon_s [s]
+	double timeToTouch_s(double horizon_s) const;
 	double fastestSpin_rad_s() const;  // of the specimen's parts
 	void internalStep(double h_s);
 	void trackAfterStep(double h_s);

@@ -283,6 +283,60 @@ Motion relativeMotion(const btCollisionObject* mover, const btCollisionObject* o
 }
 }  // namespace
 
+double timeToTouch_s(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
+					 double horizon_s, double minGap_m)
+{
+	const int kCapacity = 16;  // as mayTouchWithin
+	Piece mine[kCapacity], theirs[kCapacity];
+	double first = horizon_s;
+	for (const btCollisionObject* other : others)
+	{
+		const int numOther = pieces(other, btScalar(0), theirs, kCapacity);
+		for (const btCollisionObject* mover : movers)
+		{
+			if (other == mover)
+			{
+				continue;
+			}
+			const Motion motion = relativeMotion(mover, other);
+			// a pair whose boxes stay apart over the horizon at the mover's speed bound cannot touch within it
+			const btScalar grow = btScalar((double(motion.velocity.length()) + motion.spinSpeed_m_s) * first + minGap_m);
+			const int numMover = pieces(mover, grow, mine, kCapacity);
+			for (int i = 0; i < numMover; i++)
+			{
+				for (int j = 0; j < numOther; j++)
+				{
+					if (!mine[i].shape || !theirs[j].shape || !overlap(mine[i].lo, mine[i].hi, theirs[j].lo, theirs[j].hi))
+					{
+						continue;
+					}
+					btVoronoiSimplexSolver simplex;
+					btGjkPairDetector gjk(mine[i].shape, theirs[j].shape, &simplex, nullptr);
+					btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+					input.m_transformA = mine[i].transform;
+					input.m_transformB = theirs[j].transform;
+					btPointCollector closest;
+					gjk.getClosestPoints(input, closest, nullptr);
+					if (!closest.m_hasResult || !(double(closest.m_distance) > minGap_m))
+					{
+						continue;
+					}
+					// the mover's point nearest the other, and its velocity in the other's frame along the normal
+					// (from the other towards the mover)
+					const btVector3 n = closest.m_normalOnBInWorld;
+					const btVector3 nearest = closest.m_pointInWorld + n * closest.m_distance;
+					const double closing = -double((motion.velocity + motion.spin.cross(nearest - motion.centre)).dot(n));
+					if (closing > 0 && double(closest.m_distance) < closing * first)
+					{
+						first = double(closest.m_distance) / closing;
+					}
+				}
+			}
+		}
+	}
+	return first;
+}
+
 double relativeSpeedBound_m_s(const btCollisionObject* mover, const btCollisionObject* other)
 {
 	const Motion motion = relativeMotion(mover, other);
@@ -382,7 +436,8 @@ std::vector<std::string> validate(const ContactSubstepSettings& settings)
 
 ContactSubstepPolicy::ContactSubstepPolicy(const ContactSubstepSettings& settings) : m_settings(settings), m_errors(validate(settings)) {}
 
-int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin)
+int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin,
+								  const TimeToTouch& timeToTouch)
 {
 	if (!(std::isfinite(frame_s) && frame_s > 0) || !m_errors.empty())
 	{
@@ -392,9 +447,11 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 	int steps = 0;
 	double remaining = frame_s + m_owed_s;
 	m_owed_s = 0;
+	bool steppedInContact = false;
 	while (remaining > 1e-12 * frame_s)
 	{
 		double piece = remaining;
+		bool touching = false;
 		if (h > 0)
 		{
 			// cut in halves until a piece reaches no contact within its own length; a rest of at most a substep is
@@ -406,6 +463,7 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 			const bool inContact = piece < remaining ? piece <= h : (remaining <= h && nearContact(remaining));
 			if (inContact)
 			{
+				steppedInContact = true;
 				// in or near contact the world keeps a clock of its own, in steps of the contact substep: a rest of
 				// the frame shorter than one is owed to the next frame (the world then lags the frame by less than a
 				// substep, as in upstream's fixed-step stepSimulation), so no frame step cuts a short step into the
@@ -440,6 +498,33 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 					m_owed_s = remaining;
 					break;
 				}
+				if (timeToTouch)
+				{
+					// a pair touching within this step or the next is stepped to its touch: in one step if that is at
+					// least half a substep away, in two equal ones if it is past this step (a touch nearer than half a
+					// substep is met within the step, as without timeToTouch)
+					const double touch = timeToTouch(2 * h);
+					const double toTouch = touch >= h / 2 && touch <= h ? touch : (touch > h && touch < 2 * h ? touch / 2 : 0);
+					if (toTouch > remaining + 1e-12 * frame_s)
+					{
+						// as a tick past the frame's end: the steps to the touch do not depend on the frame step
+						m_owed_s = remaining;
+						break;
+					}
+					if (toTouch > 0)
+					{
+						piece = toTouch;
+						touching = toTouch == touch;
+					}
+				}
+			}
+			else if (steppedInContact && piece < h / 2)
+			{
+				// the rest of a frame whose contact ended within it, shorter than half a substep, is owed to the next
+				// frame: a step of a fraction of a microsecond after the substeps threw an elastic-plastic Charpy
+				// specimen apart (the ticks counted from a touch leave such rests)
+				m_owed_s = remaining;
+				break;
 			}
 			else if (spin && m_settings.max_turn_per_step_rad > 0)
 			{
@@ -461,7 +546,8 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 		remaining -= piece;
 		if (h > 0)
 		{
-			m_phase_s = std::fmod(m_phase_s + piece, h);
+			// after a step to a touch the clock's ticks count from the touch
+			m_phase_s = touching ? 0 : std::fmod(m_phase_s + piece, h);
 		}
 	}
 	return steps;

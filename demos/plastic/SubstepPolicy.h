@@ -51,6 +51,18 @@ double relativeGravity_m_s2(const btCollisionObject* mover, const btCollisionObj
 bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
 					double horizon_s, double clearance_m = 0.001, double speculativeReach_m = 0);
 
+// The time within horizon_s at which the first pair of a body of `movers` and an object of `others` that is now more
+// than minGap_m apart closes its gap at its present velocities [s]: the distance between their shapes (GJK, a compound
+// child by child as mayTouchWithin) over the closing speed, along the normal between them, of the mover's point
+// nearest the other in the other's moving frame; horizon_s when no pair closes within it. Pairs that touch (within
+// minGap_m), that close nothing, or whose shapes are not both convex are left out. With speculative contacts a scene
+// steps to that time so that a contact's first step starts touching: a speculative contact met within a step carries
+// its load for the whole step while the bodies still cross the gap, and the work of that force over the gap is lost
+// (the Charpy striker meeting the specimen: the section's collapse load, 6.4 kN, times up to the 0.31 mm a 0.06 ms
+// step closes).
+double timeToTouch_s(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
+					 double horizon_s, double minGap_m);
+
 // Whether a contact point between a body of `movers` and one of `others` carried an impulse in the world's last
 // step (their manifolds as the dispatcher holds them): a pair pressed together, whose forces a longer step would
 // change, as against one that touches only through speculative points that hold nothing.
@@ -75,6 +87,7 @@ public:
 	using NearContact = std::function<bool(double horizon_s)>;  // can a contact happen within horizon_s?
 	using Step = std::function<void(double step_s)>;           // one internal step of the world
 	using Spin = std::function<double()>;                      // the fastest angular speed of the bodies [rad/s]
+	using TimeToTouch = std::function<double(double horizon_s)>;  // when the first pair now apart touches [s]
 
 	// settings that validate refuses are kept out: errors() says why, and advance steps nothing
 	explicit ContactSubstepPolicy(const ContactSubstepSettings& settings);
@@ -87,9 +100,16 @@ public:
 	// changes the steps the contacts see only up to the first tick, and not the phase of an impact within them. A rest
 	// of the frame that is a whole number of substeps is taken in that many equal steps. Out of contact, what is owed
 	// is stepped with the frame, and, given `spin`, a step is cut so that it turns no body more than
-	// max_turn_per_step_rad. The contact test is made again after every internal step. Returns the number of internal
-	// steps; -1, with no step, for a frame that is not a positive finite time or when errors() is not empty.
-	int advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin = Spin());
+	// max_turn_per_step_rad. The contact test is made again after every internal step. Given `timeToTouch`, a pair
+	// that comes into touch within two substeps in contact is stepped to its touch (in one step of at least half a
+	// substep, or two equal ones), and the clock's ticks then count from the touch: the contact's first step starts
+	// touching and is a whole substep. A rest of a frame shorter than half a substep after steps in contact, out of
+	// contact, is owed to the next frame rather than stepped (the ticks counted from a touch leave such rests, and a
+	// step of a fraction of a microsecond after the substeps threw an elastic-plastic Charpy specimen apart). Returns
+	// the number of internal steps; -1, with no step, for a frame that is not a positive finite time or when errors()
+	// is not empty.
+	int advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin = Spin(),
+				const TimeToTouch& timeToTouch = TimeToTouch());
 
 	// frame time not yet stepped: the world lags the frames by this much, less than one contact substep [s]
 	double owed_s() const { return m_owed_s; }

@@ -345,6 +345,120 @@ TEST(SubstepPolicy, AContactIsPressedWhileItCarriesAnImpulse)
 	world.removeRigidBody(&floor);
 }
 
+TEST(SubstepPolicy, TheTimeToTouchIsTheGapOverTheClosingSpeedAlongTheNormal)
+{
+	BallAndWall s(0.01, 10.0);  // touches after 1 ms
+	const auto touch = [&](double horizon_s, double minGap_m = 1e-6) { return plastic::timeToTouch_s({s.ball.get()}, {s.wall.get()}, horizon_s, minGap_m); };
+	EXPECT_NEAR(touch(1.0), 1e-3, 1e-6);
+	EXPECT_EQ(touch(5e-4), 5e-4);  // not within the horizon
+	// a ball sliding along the wall closes nothing; one moving away never touches
+	s.ball->setLinearVelocity(btVector3(0, 10, 0));
+	EXPECT_EQ(touch(1.0), 1.0);
+	s.ball->setLinearVelocity(btVector3(-10, 0, 0));
+	EXPECT_EQ(touch(1.0), 1.0);
+	// only the part of the velocity along the normal closes: at 45 degrees it takes sqrt(2) times as long
+	s.ball->setLinearVelocity(btVector3(btScalar(10 / std::sqrt(2.0)), btScalar(10 / std::sqrt(2.0)), 0));
+	EXPECT_NEAR(touch(1.0), std::sqrt(2.0) * 1e-3, 1e-6);
+	// a pair within minGap_m touches already
+	s.ball->setLinearVelocity(btVector3(10, 0, 0));
+	EXPECT_EQ(touch(1.0, 0.02), 1.0);
+	// the closing speed is the nearest point's: a ball spinning about an axis through the contact's normal closes no
+	// faster, a box turning its corner towards the wall closes by its corner's speed
+	btBoxShape cubeShape(btVector3(btScalar(0.1), btScalar(0.1), btScalar(0.1)));
+	btRigidBody cube(btScalar(1), nullptr, &cubeShape, btVector3(1, 1, 1));
+	btTransform t;
+	t.setIdentity();
+	t.setOrigin(btVector3(btScalar(-0.1 - 0.01), 0, 0));  // its face 10 mm from the wall's
+	cube.setWorldTransform(t);
+	cube.setAngularVelocity(btVector3(0, 0, 0));
+	cube.setLinearVelocity(btVector3(1, 0, 0));
+	EXPECT_NEAR(plastic::timeToTouch_s({&cube}, {s.wall.get()}, 1.0, 1e-6), 1e-2, 1e-5);
+}
+
+TEST(SubstepPolicy, APairAboutToTouchIsSteppedToItsTouchAndTheClockCountsFromIt)
+{
+	// in contact (every piece near), substeps of 1 ms: a ball 1.6 substeps from the wall is stepped to it in two equal
+	// steps, one 0.7 substeps away in one; one 0.3 substeps away is met within the step (no step shorter than half a
+	// substep). The ticks then count from the touch, whatever the phase the clock had
+	const auto touching = [](double) { return true; };
+	const struct
+	{
+		double touch_substeps, before_s;  // when the ball touches; a frame far from contact stepped first
+		std::vector<double> first_s;      // the steps to expect, then whole substeps
+	} cases[] = {{1.6, 0, {0.8e-3, 0.8e-3}}, {0.7, 0, {0.7e-3}}, {0.3, 0, {1e-3}}, {1.6, 0.4e-3, {0.8e-3, 0.8e-3}}, {3.6, 0, {1e-3, 1e-3, 0.8e-3, 0.8e-3}}};
+	for (const auto& c : cases)
+	{
+		BallAndWall s(10.0 * c.touch_substeps * 1e-3, 10.0);
+		plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{1e-3});
+		std::vector<double> steps;
+		const auto step = [&](double h) {
+			steps.push_back(h);
+			s.move(h);
+		};
+		const auto timeToTouch = [&](double horizon_s) { return plastic::timeToTouch_s({s.ball.get()}, {s.wall.get()}, horizon_s, 1e-9); };
+		if (c.before_s > 0)
+		{
+			// the ball is moved back by what the frame far from contact will move it
+			s.move(-c.before_s);
+			policy.advance(
+				c.before_s, [](double) { return false; }, step, {}, timeToTouch);
+			ASSERT_EQ(steps.size(), 1u);
+			steps.clear();
+		}
+		policy.advance(10e-3, touching, step, {}, timeToTouch);
+		ASSERT_GE(steps.size(), c.first_s.size() + 3) << c.touch_substeps;
+		for (size_t i = 0; i < steps.size(); i++)
+		{
+			const double expected = i < c.first_s.size() ? c.first_s[i] : 1e-3;
+			if (i + 1 == steps.size() && policy.owed_s() == 0 && c.before_s > 0)
+			{
+				continue;  // the frame's last step may end on the frame
+			}
+			EXPECT_NEAR(steps[i], expected, 2e-9) << "step " << i << " of a ball touching after " << c.touch_substeps << " substeps";
+		}
+	}
+	// without timeToTouch the ball is met where the ticks fall
+	BallAndWall s(16e-3, 10.0);
+	plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{1e-3});
+	std::vector<double> steps;
+	policy.advance(10e-3, touching, [&](double h) { steps.push_back(h); s.move(h); });
+	EXPECT_NEAR(steps[0], 1e-3, 1e-15);
+	EXPECT_NEAR(steps[1], 1e-3, 1e-15);
+}
+
+TEST(SubstepPolicy, ARestShorterThanHalfASubstepAfterContactIsOwedNotStepped)
+{
+	// contact ends 0.3 substeps before the frame's end: that rest goes with the next frame (a step of a fraction of a
+	// microsecond after the substeps threw an elastic-plastic Charpy specimen apart); a rest of 0.6 substeps is stepped
+	for (const double rest_s : {0.3e-3, 0.6e-3})
+	{
+		plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{1e-3});
+		double t = 0;
+		const auto near = [&](double) { return t < 1.95e-3; };
+		std::vector<double> steps;
+		const auto step = [&](double h) {
+			steps.push_back(h);
+			t += h;
+		};
+		policy.advance(2e-3 + rest_s, near, step);
+		if (rest_s < 0.5e-3)
+		{
+			ASSERT_EQ(steps.size(), 2u);
+			EXPECT_NEAR(policy.owed_s(), rest_s, 1e-15);
+			steps.clear();
+			policy.advance(1e-3, near, step);
+			ASSERT_EQ(steps.size(), 1u);
+			EXPECT_NEAR(steps[0], 1e-3 + rest_s, 1e-15);  // with the next frame, out of contact
+		}
+		else
+		{
+			ASSERT_EQ(steps.size(), 3u);
+			EXPECT_NEAR(steps[2], rest_s, 1e-15);
+			EXPECT_EQ(policy.owed_s(), 0.0);
+		}
+	}
+}
+
 TEST(SubstepPolicy, OnlyThePartOfAFrameNearContactIsSubstepped)
 {
 	// 1/60 s frame, contact after 10 ms: the first ~10 ms go in a few halves, the rest in 1 ms steps
