@@ -231,7 +231,9 @@ def write_markdown(rows, case_names, path, command):
                   "ratio, where sequential impulse's iterations move each by its mass over the hammer's an iteration.",
                   "Cases starting with direct-spec add `--speculative-contacts` (patch 0036): box pairs get contacts",
                   "before they overlap, within the contact breaking threshold (0.3 mm for the specimen's boxes), so no",
-                  "part sinks into an anvil within a step that closes less than that."]
+                  "part sinks into an anvil within a step that closes less than that; with them a part's edge across a",
+                  "face touches it at both ends (patch 0042, as `--box-edges-across-faces` in the direct-edges cases)",
+                  "and the world is stepped to the striker's touch, so `direct-spec-edges-parts16` is `direct-spec-parts16`."]
     inaccurate, stopped = [], []
     for r in rows:
         if r["method"] not in METHODS[4:]:

@@ -115,9 +115,11 @@ std::string charpyUsage()
 		"(every part behind the anvils, none able to touch an anvil within a frame), or at --duration;\n"
 		"  --full-duration      runs to --duration even after the specimen is clear\n"
 		"  --speculative-contacts  box pairs touch before they overlap (patch 0036), so parts do not sink in at coarse steps;\n"
-		"                       a step in which the hammer closes more than their reach is warned about (predicted from the settings)\n"
+		"                       a step in which the hammer closes more than their reach is warned about (predicted from the settings);\n"
+		"                       with them an edge across a face touches it at both ends (as --box-edges-across-faces) and the\n"
+		"                       world is stepped to the time the striker or a part touches, so a contact's first step starts touching\n"
 		"  --box-edges-across-faces  an edge of a box lying nearly across another's face touches it at both ends (patch 0042),\n"
-		"                       not at its deeper end alone as upstream has it\n"
+		"                       not at its deeper end alone as upstream has it (on with --speculative-contacts)\n"
 		"  --geometry=thesis    (default) the thesis' scene: a flat striker nose as thick as the hammer, released from 2.8 rad\n"
 		"  --geometry=standard  the standard machine's striker (ISO 148-1): a 2 mm edge at mid-span, 5.2 m/s\n";
 	return text + scene::usageOf(valueFlags());

@@ -71,11 +71,11 @@ struct CharpyParameters
 	// btDispatcherInfo::m_boxBoxEdgesAcrossFaces (patch 0042): an edge of a box lying within 5 degrees of across
 	// another's face (a part's edge on the striker's or an anvil's face, the hammer swinging about the specimen's
 	// axis) touches it at both ends; Bullet's detector gives one point at the deeper end, and the part's torque about
-	// its axis went into its joints (13 J of torsion booked by elastic-plastic in 16 parts). Off by default: with
-	// friction 0.25 the standard striker loses more with it, at 0.06 ms steps 191.4 -> 193.8 J on average over
-	// 5.1-5.3 m/s against 188.4 J converged (without it the halves sink 0.2-0.3 mm into the anvils and the correction's
-	// gain offsets the coarse steps' friction excess), and by default (sequential impulse, 0.01 ms) 190.4 -> 193.9 J,
-	// where a dropped point that carried the load still kicks the halves
+	// its axis went into its joints (13 J of torsion booked by elastic-plastic in 16 parts). On with
+	// speculative_contacts whatever this says. Off by default otherwise: by default (sequential impulse, 0.01 ms) the
+	// standard striker at friction 0.25 reads 190.4 -> 193.9 J at 5.2 m/s with it (its own converged run, 2 us, is
+	// 194.2 J either way: the run without it is the odd one), which the test against the friction model's 187.95 J
+	// (3 %) would not pass
 	bool box_edges_across_faces = false;
 	// Bullet's own continuous collision detection on the specimen's parts (btCollisionObject::setCcdMotionThreshold and
 	// setCcdSweptSphereRadius): a part whose centre moves more than the threshold in a step is swept as a sphere of that
