@@ -207,7 +207,7 @@ def fewest_steps(rows, converged, peer=()):
     """Markdown: per plastic method and frame step, the run with the fewest internal steps whose loss is within
     STEPS_TARGET_ERROR_PCT of its method's converged loss (every solver and contact setting the sweep ran), and the
     MuJoCo peer's run with the fewest steps within as much of its own converged loss."""
-    frame = lambda r: "auto" if r.get("auto_dt") == "1" else r.get("dt_ms")  # noqa: E731
+    frame = lambda r: "auto" if r.get("auto_dt") in ("1", "True") else r.get("dt_ms")  # noqa: E731  (as table's)
     methods = [m for m in METHOD_ORDER if m in PLASTIC_METHODS and any(r["method"] == m for r in rows)]
     frames = [f for f in STEPS_FRAME_STEPS if any(frame(r) == f and not is_reference(r) for r in rows)]
     best = {}
@@ -239,11 +239,10 @@ def fewest_steps(rows, converged, peer=()):
             cells.append(f"{int(number(r, 'steps'))} ({peer_report.discretisation_error(r, peer_ref):+.1f} %)" if r else
                          ("none" if any(x.get("dt_ms") == f for x in peer) else "not run"))
         lines.append(f"| {f} | " + " | ".join(cells) + " |")
-    found = [r for r in best.values()]
-    met = sum(number(r, "steps") <= STEPS_TARGET for r in found)
+    met = sum(number(r, "steps") <= STEPS_TARGET for r in best.values())
     total = len(methods) * len(frames)
     text = (f"{met} of these {total} cells (method x frame step) have a run within {STEPS_TARGET_ERROR_PCT:g} % in at most "
-            f"{STEPS_TARGET} internal steps; {total - len(found)} have no run within {STEPS_TARGET_ERROR_PCT:g} %.")
+            f"{STEPS_TARGET} internal steps; {total - len(best)} have no run within {STEPS_TARGET_ERROR_PCT:g} %.")
     peer_any = [r for r in peer if r.get("diverged") != "1" and r.get("passed_anvils") == "1" and r is not peer_ref
                 and number(r, "steps") and peer_report.discretisation_error(r, peer_ref) is not None
                 and abs(peer_report.discretisation_error(r, peer_ref)) <= STEPS_TARGET_ERROR_PCT]

@@ -22,7 +22,7 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	r.iterations = parameters.solver_iterations;
 	r.solver = plastic::solverKindName(parameters.solver);
 	r.speculative_contacts = parameters.speculative_contacts;
-	r.box_edges_across_faces = parameters.box_edges_across_faces || parameters.speculative_contacts;  // as the world has it
+	r.box_edges_across_faces = scene.world().getDispatchInfo().m_boxBoxEdgesAcrossFaces;  // as the world has it
 	r.E0_J = scene.initialEnergy_j();
 	r.analytic_J = scene.section().analytic_loss_j;
 	r.theta_pass_rad = scene.section().theta_pass_rad;

@@ -136,6 +136,20 @@ int boxVerticesNear(const Piece& mover, const btVector3& n, const btVector3& onO
 	return 0;
 }
 
+// GJK's closest points of two convex pieces (no penetration solver: overlapping shapes give no result), the normal
+// from the other towards the mover
+btPointCollector closestPoints(const Piece& mover, const Piece& other)
+{
+	btVoronoiSimplexSolver simplex;
+	btGjkPairDetector gjk(mover.shape, other.shape, &simplex, nullptr);
+	btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+	input.m_transformA = mover.transform;
+	input.m_transformB = other.transform;
+	btPointCollector closest;
+	gjk.getClosestPoints(input, closest, nullptr);
+	return closest;
+}
+
 // whether two pieces can touch within the horizon: their boxes overlap (the mover's grown by reach.grow) and, when both
 // are convex, the distance between their shapes (GJK; 0 when they overlap) is at most what the mover can close along
 // the normal between them. The shapes' gap along a fixed direction n bounds their distance from below; translated,
@@ -155,13 +169,7 @@ bool within(const Piece& mover, const Piece& other, const Reach& reach)
 	{
 		return true;
 	}
-	btVoronoiSimplexSolver simplex;
-	btGjkPairDetector gjk(mover.shape, other.shape, &simplex, nullptr);
-	btDiscreteCollisionDetectorInterface::ClosestPointInput input;
-	input.m_transformA = mover.transform;
-	input.m_transformB = other.transform;
-	btPointCollector closest;
-	gjk.getClosestPoints(input, closest, nullptr);
+	const btPointCollector closest = closestPoints(mover, other);
 	// without a penetration solver an overlap gives no result (and so would a distance past the input's default
 	// m_maximumDistanceSquared, 1e18 m^2)
 	if (!closest.m_hasResult)
@@ -310,13 +318,7 @@ double timeToTouch_s(const std::vector<const btCollisionObject*>& movers, const 
 					{
 						continue;
 					}
-					btVoronoiSimplexSolver simplex;
-					btGjkPairDetector gjk(mine[i].shape, theirs[j].shape, &simplex, nullptr);
-					btDiscreteCollisionDetectorInterface::ClosestPointInput input;
-					input.m_transformA = mine[i].transform;
-					input.m_transformB = theirs[j].transform;
-					btPointCollector closest;
-					gjk.getClosestPoints(input, closest, nullptr);
+					const btPointCollector closest = closestPoints(mine[i], theirs[j]);
 					if (!closest.m_hasResult || !(double(closest.m_distance) > minGap_m))
 					{
 						continue;
