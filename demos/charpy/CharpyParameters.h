@@ -66,7 +66,8 @@ struct CharpyParameters
 	// part that speculative contacts stop rests a micrometre off an anvil's edge, where Bullet's detector picks the
 	// edge pair by a hair and the manifold drops the point that carries the load, which jammed the standard striker's
 	// specimen), and the world is stepped to the time a part and an anvil or the hammer touch
-	// (plastic::timeToTouch_s), so that a contact's first step starts touching
+	// (plastic::timeToTouch_s), so that a contact's first step starts touching, and a step within which a part runs off
+	// a sharp anvil's edge ends there (plastic::timeToRelease_s), so that the anvil holds it no longer
 	bool speculative_contacts = false;
 	// btDispatcherInfo::m_boxBoxEdgesAcrossFaces (patch 0042): an edge of a box lying within 5 degrees of across
 	// another's face (a part's edge on the striker's or an anvil's face, the hammer swinging about the specimen's

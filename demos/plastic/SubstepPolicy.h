@@ -63,6 +63,19 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 double timeToTouch_s(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
 					 double horizon_s, double minGap_m);
 
+// The time within horizon_s at which the first pressed contact between a box of `movers` and a box of `others` runs
+// off the mover's face [s]: for each manifold of such a pair of which a point carried an impulse in the world's last
+// step, each point that did or that touches (within 1 % of the breaking threshold) is taken where the other's point of
+// it now is in the mover's frame, on the mover's face nearest the contact's normal, and slides over that face at the
+// other's material velocity there; it reaches the face's edge after the distance to that edge over its speed along
+// the face (an edge of the face it already lies on is where the manifold clipped a contact reaching past the face, and
+// does not count); the contact ends when its last point has; horizon_s when none ends within it. A Charpy half held
+// on an anvil's edge while the striker folds the specimen is let go as its end passes the edge: met within a step, the
+// anvil held it to the step's end and the joint bent on past the pass angle (thesis, 60 us: 2.037 rad against 1.991).
+// Pairs whose other is not a box (a rounded edge) are left out.
+double timeToRelease_s(btDispatcher& dispatcher, const std::vector<const btCollisionObject*>& movers,
+					   const std::vector<const btCollisionObject*>& others, double horizon_s);
+
 // Whether a contact point between a body of `movers` and one of `others` carried an impulse in the world's last
 // step (their manifolds as the dispatcher holds them): a pair pressed together, whose forces a longer step would
 // change, as against one that touches only through speculative points that hold nothing.
@@ -88,6 +101,7 @@ public:
 	using Step = std::function<void(double step_s)>;           // one internal step of the world
 	using Spin = std::function<double()>;                      // the fastest angular speed of the bodies [rad/s]
 	using TimeToTouch = std::function<double(double horizon_s)>;  // when the first pair now apart touches [s]
+	using TimeToRelease = std::function<double(double horizon_s)>;  // when the first pressed contact ends [s]
 
 	// settings that validate refuses are kept out: errors() says why, and advance steps nothing
 	explicit ContactSubstepPolicy(const ContactSubstepSettings& settings);
@@ -108,8 +122,11 @@ public:
 	// step of a fraction of a microsecond after the substeps threw an elastic-plastic Charpy specimen apart). Returns
 	// the number of internal steps; -1, with no step, for a frame that is not a positive finite time or when errors()
 	// is not empty.
+	// Given `timeToRelease`, a step in contact within which a pressed contact ends, at least a quarter of a substep in,
+	// ends there, and a contact that ends within the next step is met in two equal steps (once in a row: the
+	// prediction is linear); the ticks count from there.
 	int advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin = Spin(),
-				const TimeToTouch& timeToTouch = TimeToTouch());
+				const TimeToTouch& timeToTouch = TimeToTouch(), const TimeToRelease& timeToRelease = TimeToRelease());
 
 	// frame time not yet stepped: the world lags the frames by this much, less than one contact substep [s]
 	double owed_s() const { return m_owed_s; }
@@ -122,5 +139,6 @@ private:
 	std::vector<std::string> m_errors;
 	double m_owed_s = 0;
 	double m_phase_s = 0;  // the time the world has been stepped through this policy, modulo the contact substep
+	bool m_splitForRelease = false;  // the last step was the first of two to a contact's end
 };
 }  // namespace plastic

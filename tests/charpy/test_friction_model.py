@@ -119,8 +119,9 @@ class FrictionModelTest(unittest.TestCase):
         # ISO anvils). The loss at coarse steps depends a little on the run, so each case runs at five impact speeds,
         # 5.1-5.3 m/s (the converged loss moves with the speed by at most 0.6 %, 1.4 % and 2.5 % with the ISO anvils at
         # friction 0.2 and 0.25), the median held to 2 % of the converged loss and each run to 3 %, and 48 of the 50
-        # runs to 3 % of the model (issue 25's target). Measured: medians +0.2 to +1.7 %, single runs -0.1 to +2.1 %, 50
-        # of 50 within 3 % of the model (mean 1.46 %). In Coulomb's box (before patch 0043) medians +0.9 to +2.2 %,
+        # runs to 3 % of the model (issue 25's target). Measured: medians -0.2 to +1.7 %, single runs -0.3 to +2.1 %, 50
+        # of 50 within 3 % of the model (mean 1.21 %; 1.46 % before a step within which a half runs off a sharp anvil's
+        # edge ends there, plastic::timeToRelease_s). In Coulomb's box (before patch 0043) medians +0.9 to +2.2 %,
         # single runs -0.1 to +3.5 %, 47 of 50 within 3 % of the model (mean 1.77 %): where the solve turned the slip
         # both friction rows carried mu N, and the striker's arc pushed the halves onto their supports. Before the world
         # was stepped to the touch, 38 of 50 within 3 % of the model (mean 2.6 %): the striker's speculative contact, met
@@ -128,8 +129,8 @@ class FrictionModelTest(unittest.TestCase):
         # the medians were -4.5 to +2.0 % and single runs -9.6 to +3.0 %: a compound's child (the ISO anvils' rounded
         # edges, the hammer's striker) got its contacts only once its box overlapped a half, the half sank into it, and
         # the contacts' position correction turned the yielding hinge (up to 7.2 J of plastic work booked beyond the
-        # energy lost, max_booked_excess_J). Internal steps 88-103, median 96, 48 of 50 within 100 (89-112 and 47 in
-        # the box, 91-121 and 46 before the step to the touch).
+        # energy lost, max_booked_excess_J). Internal steps 91-103, median 97, 46 of 50 within 100 (88-103 and 48
+        # before the step to the release, 89-112 and 47 in the box, 91-121 and 46 before the step to the touch).
         coarse = ("--solver=direct", "--speculative-contacts", "--contact-substep=6e-5", "--dt=1e-3")
         converged = ("--solver=direct", "--speculative-contacts", "--contact-substep=2e-6", "--dt=1e-3", "--impact-speed=5.2")
         iso = ("--anvil-radius=0.001", "--anvil-taper=0.192")
@@ -158,7 +159,7 @@ class FrictionModelTest(unittest.TestCase):
         self.assertGreaterEqual(sum(abs(e) < 0.03 for e in model_errors), 48, sorted(model_errors))
         steps.sort()
         self.assertLessEqual(steps[len(steps) // 2], 100, steps)
-        self.assertGreaterEqual(sum(n <= 100 for n in steps), 47, steps)
+        self.assertGreaterEqual(sum(n <= 100 for n in steps), 45, steps)
 
     def test_the_thesis_flat_nose_jams_where_the_standard_striker_does_not(self):
         flat = run("--geometry=thesis", "--friction=0.1")
