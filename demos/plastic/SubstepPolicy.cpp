@@ -289,6 +289,34 @@ Motion relativeMotion(const btCollisionObject* mover, const btCollisionObject* o
 	motion.spinSpeed_m_s = double(motion.spin.length()) * reach;
 	return motion;
 }
+
+// Whether the manifold lies between a body of `movers` and an object of `others`; moverIsBody0 says which of its
+// bodies is the mover
+bool betweenSets(const btPersistentManifold& manifold, const std::vector<const btCollisionObject*>& movers,
+				 const std::vector<const btCollisionObject*>& others, bool& moverIsBody0)
+{
+	auto in = [](const std::vector<const btCollisionObject*>& set, const btCollisionObject* o)
+	{
+		return std::find(set.begin(), set.end(), o) != set.end();
+	};
+	const btCollisionObject* a = manifold.getBody0();
+	const btCollisionObject* b = manifold.getBody1();
+	moverIsBody0 = in(movers, a) && in(others, b);
+	return moverIsBody0 || (in(movers, b) && in(others, a));
+}
+
+// Whether a point of the manifold carried an impulse in the world's last step
+bool carriedImpulse(const btPersistentManifold& manifold)
+{
+	for (int j = 0; j < manifold.getNumContacts(); j++)
+	{
+		if (manifold.getContactPoint(j).getAppliedImpulse() > 0)
+		{
+			return true;
+		}
+	}
+	return false;
+}
 }  // namespace
 
 double timeToTouch_s(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
@@ -392,23 +420,17 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 double timeToRelease_s(btDispatcher& dispatcher, const std::vector<const btCollisionObject*>& movers,
 					   const std::vector<const btCollisionObject*>& others, double horizon_s)
 {
-	auto in = [](const std::vector<const btCollisionObject*>& set, const btCollisionObject* o)
-	{
-		return std::find(set.begin(), set.end(), o) != set.end();
-	};
 	double first = horizon_s;
 	for (int i = 0; i < dispatcher.getNumManifolds(); i++)
 	{
 		const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(i);
-		const btCollisionObject* a = manifold->getBody0();
-		const btCollisionObject* b = manifold->getBody1();
-		const bool boxIsA = in(movers, a) && in(others, b);
-		if (!boxIsA && !(in(movers, b) && in(others, a)))
+		bool boxIsA = false;
+		if (!betweenSets(*manifold, movers, others, boxIsA))
 		{
 			continue;
 		}
-		const btCollisionObject* box = boxIsA ? a : b;
-		const btCollisionObject* other = boxIsA ? b : a;
+		const btCollisionObject* box = boxIsA ? manifold->getBody0() : manifold->getBody1();
+		const btCollisionObject* other = boxIsA ? manifold->getBody1() : manifold->getBody0();
 		// a box's face running off another box's edge lets go at once; round a rounded edge (an ISO anvil's, a capsule
 		// child of a compound) the contact fades as the face rolls off it, and its manifold's points, found one a step
 		// by GJK, do not give the face's end (stepping to their predictions put the standard striker's ISO runs +1 %
@@ -423,12 +445,7 @@ double timeToRelease_s(btDispatcher& dispatcher, const std::vector<const btColli
 		const btRigidBody* otherBody = movingBody(other);
 		// a pressed contact (a point of it carried an impulse) ends when the last of its points that touch has run off
 		// the face: the load of a face's points is statically indeterminate, and one that carried none still touches
-		bool pressed = false;
-		for (int j = 0; j < manifold->getNumContacts(); j++)
-		{
-			pressed = pressed || manifold->getContactPoint(j).getAppliedImpulse() > 0;
-		}
-		if (!pressed)
+		if (!carriedImpulse(*manifold))
 		{
 			continue;
 		}
@@ -490,25 +507,13 @@ double timeToRelease_s(btDispatcher& dispatcher, const std::vector<const btColli
 bool pressedContact(btDispatcher& dispatcher, const std::vector<const btCollisionObject*>& movers,
 					const std::vector<const btCollisionObject*>& others)
 {
-	auto in = [](const std::vector<const btCollisionObject*>& set, const btCollisionObject* o)
-	{
-		return std::find(set.begin(), set.end(), o) != set.end();
-	};
 	for (int i = 0; i < dispatcher.getNumManifolds(); i++)
 	{
 		const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(i);
-		const btCollisionObject* a = manifold->getBody0();
-		const btCollisionObject* b = manifold->getBody1();
-		if (!(in(movers, a) && in(others, b)) && !(in(movers, b) && in(others, a)))
+		bool moverIsBody0 = false;
+		if (betweenSets(*manifold, movers, others, moverIsBody0) && carriedImpulse(*manifold))
 		{
-			continue;
-		}
-		for (int j = 0; j < manifold->getNumContacts(); j++)
-		{
-			if (manifold->getContactPoint(j).getAppliedImpulse() > 0)
-			{
-				return true;
-			}
+			return true;
 		}
 	}
 	return false;
