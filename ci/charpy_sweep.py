@@ -37,10 +37,15 @@ SPECULATIVE_SUBSTEP_S = [1e-5, 3e-5, 6e-5, 1e-4]
 # tick: the world steps at the substep on its own clock): how the loss moves with the substep, not only at the chosen ones
 LANDSCAPE_SUBSTEP_S = [4e-5, 5e-5, 7e-5, 8e-5, 9e-5, 1.1e-4, 1.2e-4]
 LANDSCAPE_DT_MS = 1
+# and with frames shorter than 5 ms gathered out of contact into one internal step (--free-step=5e-3): the steps a
+# test takes then no longer grow with the frame rate (0.1 ms frames after the pass were a step each)
+FREE_STEP_S = 5e-3
+FREE_SUBSTEP_S = [3e-5, 6e-5]
 # each plastic method's converged run, the reference of the discretisation errors: direct solve, speculative contacts,
 # 2 us contact substeps (the loss moves by 0.1 % between 2 and 1 us; sequential impulse gives the same at 2 us)
 REFERENCE_SUBSTEP_S = 2e-6
-FIRST_COLUMNS = ("key", "method", "dt_ms", "auto_dt", "iterations", "contact_substep_s", "solver", "contacts", "reference")
+FIRST_COLUMNS = ("key", "method", "dt_ms", "auto_dt", "iterations", "contact_substep_s", "free_step_s", "solver", "contacts",
+                 "reference")
 
 
 def configurations(quick=False):
@@ -51,7 +56,7 @@ def configurations(quick=False):
     substeps = [1e-5] if quick else CONTACT_SUBSTEP_S
     out = []
 
-    def add(method, it, sub, dt, solver, speculative=False, reference=False):
+    def add(method, it, sub, dt, solver, speculative=False, reference=False, free=0):
         flags = [f"--method={method}", f"--iterations={it}", f"--contact-substep={sub:g}"]
         flags.append("--auto-dt" if dt == "auto" else f"--dt={dt / 1000:.10g}")
         key = f"{method}/dt={dt}/it={it}/sub={sub:g}"
@@ -61,6 +66,9 @@ def configurations(quick=False):
         if speculative:
             flags.append("--speculative-contacts")
             key += "/speculative"
+        if free:
+            flags.append(f"--free-step={free:g}")
+            key += f"/free={free:g}"
         if reference:
             key = f"{method}/reference"
         out.append({
@@ -70,6 +78,7 @@ def configurations(quick=False):
             "auto_dt": "1" if dt == "auto" else "0",
             "iterations": str(it),
             "contact_substep_s": f"{sub:g}",
+            "free_step_s": f"{free:g}" if free else "",
             "solver": solver,
             "contacts": "speculative" if speculative else "",
             "reference": "1" if reference else "",
@@ -92,6 +101,9 @@ def configurations(quick=False):
                 add(method, 10, sub, dt, "direct", speculative=True)
         for sub in ([] if quick else LANDSCAPE_SUBSTEP_S):
             add(method, 10, sub, LANDSCAPE_DT_MS, "direct", speculative=True)
+        for sub in ([] if quick else FREE_SUBSTEP_S):
+            for dt in steps:
+                add(method, 10, sub, dt, "direct", speculative=True, free=FREE_STEP_S)
     return out
 
 

@@ -24,6 +24,9 @@ const scene::Flags<CharpyParameters>& valueFlags()
 		{"dt", numberFlag(&CharpyParameters::dt_s, "SECONDS  frame step, default 1e-4")},
 		{"auto-dt-coarse", numberFlag(&CharpyParameters::auto_dt_coarse_s, "SECONDS  frame far from contact with --auto-dt (or the longest of its halves that reaches none), default 5e-3")},
 		{"contact-substep", numberFlag(&CharpyParameters::contact_substep_s, "SECONDS  internal step in/near contact, 0 = off, default 1e-5")},
+		{"free-step", numberFlag(&CharpyParameters::free_step_s,
+								 "SECONDS  out of contact, gather frames shorter than this into one internal step of up to it (the "
+								 "world lags them by less), 0 = a step every frame (default)")},
 		{"ccd-motion-threshold", numberFlag(&CharpyParameters::ccd_motion_threshold_m,
 											"M  Bullet's CCD on the specimen's parts: sweep a part moving more than this in a step, 0 = off (default)")},
 		{"ccd-swept-radius", numberFlag(&CharpyParameters::ccd_swept_sphere_radius_m, "M  radius of the sphere Bullet's CCD sweeps, default 0")},

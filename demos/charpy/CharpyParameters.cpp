@@ -1,4 +1,5 @@
 #include "CharpyParameters.h"
+#include "scene/JsonNumber.h"
 #include "scene/Ranges.h"
 
 #include <algorithm>
@@ -67,6 +68,15 @@ std::vector<std::string> validateCharpyParameters(const CharpyParameters& p)
 	if (p.contact_substep_s != 0)
 	{
 		scene::requireRange(errors, "contact-substep", p.contact_substep_s, 1e-7, 0.05, "s (or 0 = off)");
+	}
+	if (p.free_step_s != 0)
+	{
+		scene::requireRange(errors, "free-step", p.free_step_s, std::max(p.contact_substep_s, 1e-7), 1,
+							"s, at least the contact substep, with contact substeps on (or 0 = a step every frame)");
+		if (p.contact_substep_s == 0)
+		{
+			errors.push_back("free-step: " + scene::jsonNumber(p.free_step_s) + " needs contact substeps (--contact-substep > 0)");
+		}
 	}
 	if (p.ccd_motion_threshold_m != 0)
 	{

@@ -54,6 +54,9 @@ struct CharpyParameters
 	double auto_dt_coarse_s = 5e-3;
 	double contact_substep_s = 1e-5;     // internal step while the specimen is in or near contact; 0 = off
 	                                     // (1e-5: the loss has converged; 2e-5 varies 127-136 J with the frame step)
+	double free_step_s = 0;              // out of contact, frames shorter than this are gathered into one internal step
+	                                     // of up to it (the world lags them by less): 0.1 ms frames then take the steps
+	                                     // 1 ms frames take; 0 = a step every frame (ContactSubstepSettings::free_step_s)
 	int solver_iterations = 10;
 	// the constraint solver: upstream's sequential impulse (the thesis' runs), or btDirectJointSolver (patch 0019),
 	// which solves the specimen's joints and contacts together and keeps it whole at internal steps of 0.1 to 1 ms,

@@ -152,7 +152,7 @@ CharpyScene::CharpyScene(const CharpyParameters& parameters)
 		}
 		throw std::invalid_argument(text);
 	}
-	m_substeps = plastic::ContactSubstepPolicy(plastic::ContactSubstepSettings{parameters.contact_substep_s});
+	m_substeps = plastic::ContactSubstepPolicy(plastic::ContactSubstepSettings{parameters.contact_substep_s, plastic::ContactSubstepSettings().max_turn_per_step_rad, parameters.free_step_s});
 	scene::throwIfAny(m_substeps.errors());
 	m_section = computeCharpySection(parameters);
 	m_impl = std::make_unique<Impl>(parameters.solver);

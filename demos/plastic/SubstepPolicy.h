@@ -89,6 +89,12 @@ struct ContactSubstepSettings
 	// bodies' spin): a pair of joined bodies spinning at 250 rad/s loses 0.9 % of its energy in 1/60 s steps and
 	// 0.02 % in 1 ms steps (the Charpy halves after the test); 0 = no bound
 	double max_turn_per_step_rad = 0.25;
+	// out of contact, frames shorter than this are gathered into one internal step of up to this length [s]: the world
+	// lags the frames by less than it (as upstream's fixed-step stepSimulation lags its frames by less than its step),
+	// so the internal steps a test takes do not grow with the frame rate. The rest of a frame is owed while no contact
+	// is near within the shortest of this step's halves that is longer than the rest; needs contact substeps, and is
+	// at least one. 0 = a step every frame
+	double free_step_s = 0;
 };
 
 // Every violated setting as "name: value is not in range" text; empty when valid.
@@ -124,11 +130,14 @@ public:
 	// is not empty.
 	// Given `timeToRelease`, a step in contact within which a pressed contact ends, at least a quarter of a substep in,
 	// ends there, and a contact that ends within the next step is met in two equal steps (once in a row: the
-	// prediction is linear); the ticks count from there.
+	// prediction is linear); the ticks count from there. With a free step, a frame (with what is owed) shorter than it
+	// is owed, not stepped, while no contact is near within the free step's shortest half longer than that time (one
+	// contact test per such frame), and is stepped as above once contact is near or the free step is reached.
 	int advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin = Spin(),
 				const TimeToTouch& timeToTouch = TimeToTouch(), const TimeToRelease& timeToRelease = TimeToRelease());
 
-	// frame time not yet stepped: the world lags the frames by this much, less than one contact substep [s]
+	// frame time not yet stepped: the world lags the frames by this much, less than one contact substep, or, out of
+	// contact, than the free step [s]
 	double owed_s() const { return m_owed_s; }
 
 	const ContactSubstepSettings& settings() const { return m_settings; }

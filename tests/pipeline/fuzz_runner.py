@@ -10,7 +10,7 @@ import subprocess
 import sys
 
 FLAGS = ["method", "dt", "auto-dt", "fy", "parts", "anvil-gap", "hammer-thickness", "max-plastic-rotation",
-         "iterations", "release-angle", "initial-energy", "friction", "contact-substep", "auto-dt-coarse",
+         "iterations", "release-angle", "initial-energy", "friction", "contact-substep", "auto-dt-coarse", "free-step",
          "youngs-modulus", "density", "specimen-width", "specimen-length", "notch-depth", "min-steps-per-period",
          "brittle-force", "hammer-mass", "draft", "duration", "json", "list-methods", "help"]
 VALUES = ["-1", "0", "nan", "NaN", "inf", "-inf", "1e308", "-1e308", "1e-300", "abc", "", "1e", "0x10", " 3",

@@ -786,6 +786,65 @@ TEST(SubstepPolicy, FarFromContactAFrameShorterThanASubstepIsSteppedNotOwed)
 	EXPECT_EQ(30, asked) << "the contact test is asked once for a frame of less than a substep";
 }
 
+TEST(SubstepPolicy, OutOfContactFramesShorterThanTheFreeStepAreGatheredIntoOneStep)
+{
+	// a ball 1 m/s towards a wall 5.5 mm away, 0.1 ms frames, 60 us substeps, a 1 ms free step: out of contact the
+	// world steps once every ten frames, 1 ms at a time, lagging the frames by less than the free step; from where a
+	// contact is near within the free step's half that would be gathered, it steps each frame again, and in contact
+	// it keeps its substeps, none of which carries the ball more than a substep's travel into the wall
+	BallAndWall s(5.5e-3, 1.0);
+	plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{6e-5, 0.25, 1e-3});
+	ASSERT_TRUE(policy.errors().empty());
+	std::vector<double> starts, steps;
+	double t = 0;
+	int asked = 0;
+	const auto near = [&](double horizon) {
+		asked++;
+		return s.near(horizon);
+	};
+	const auto step = [&](double h) {
+		starts.push_back(t);
+		steps.push_back(h);
+		s.move(h);
+		t += h;
+	};
+	int frames = 0;
+	for (; frames < 40; frames++)
+	{
+		const int before = asked;
+		policy.advance(1e-4, near, step);
+		EXPECT_LT(policy.owed_s(), 1e-3 + 1e-12) << "frame " << frames;
+		EXPECT_NEAR(t + policy.owed_s(), 1e-4 * (frames + 1), 1e-12) << "frame " << frames;
+		if (steps.empty())
+		{
+			EXPECT_EQ(1, asked - before) << "an owed frame asks the contact test once";
+		}
+	}
+	// the first 4 ms (the ball 1.5 mm from the wall): four steps of 1 ms, not forty of 0.1 ms
+	ASSERT_GE(steps.size(), 4u);
+	for (int i = 0; i < 4; i++)
+	{
+		EXPECT_NEAR(steps[i], 1e-3, 1e-12) << "step " << i;
+	}
+	for (size_t i = 0; i < steps.size(); i++)
+	{
+		const double depth = (starts[i] + steps[i]) * 1.0 - 5.5e-3;  // past the face at the step's end
+		if (starts[i] < 5.5e-3)
+		{
+			EXPECT_LE(depth, 6e-5 + 1e-9) << "step " << i << " of " << steps[i] << " s at " << starts[i] << " s";
+		}
+	}
+	EXPECT_LT(steps.size(), 40u - 10u) << "4 ms of frames gathered into 4 steps";
+	// refused: shorter than the substep, or without substeps
+	const plastic::ContactSubstepPolicy shorter(plastic::ContactSubstepSettings{6e-5, 0.25, 1e-5});
+	ASSERT_EQ(1u, shorter.errors().size());
+	EXPECT_NE(shorter.errors().front().find("free_step_s: 1e-05 is not in [contact-substep, 1] s"), std::string::npos) << shorter.errors().front();
+	const plastic::ContactSubstepPolicy withoutSubsteps(plastic::ContactSubstepSettings{0, 0.25, 1e-3});
+	EXPECT_EQ(1u, withoutSubsteps.errors().size());
+	const plastic::ContactSubstepPolicy notFinite(plastic::ContactSubstepSettings{6e-5, 0.25, NAN});
+	EXPECT_EQ(1u, notFinite.errors().size());
+}
+
 TEST(SubstepPolicy, FarFromContactAFrameIsOneStep)
 {
 	BallAndWall s(10.0, 1.0);
