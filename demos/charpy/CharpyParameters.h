@@ -89,7 +89,8 @@ struct CharpyParameters
 	double ccd_swept_sphere_radius_m = 0.0;
 	double duration_s = 0.06;            // simulated time after the hammer is placed just before impact
 	// runCharpy ends the test before duration_s once the specimen is clear (CharpyScene::clear: every part behind the
-	// anvils and none able to touch an anvil within a frame). The parts may still meet the hammer after that (the
+	// anvils and none able to touch an anvil within a frame, or 1 ms if the frame is longer), at the internal step that
+	// leaves it so (the rest of the frame is owed). The parts may still meet the hammer after that (the
 	// result's kinetic_against_hammer_J says how much one such collision could dissipate). The scene itself steps on
 	// to duration_s (the browser shows the swing).
 	bool end_when_clear = true;

@@ -77,9 +77,11 @@ public:
 	double hammerAngle_rad() const;  // pendulum rotation about Z from the impact position
 	bool broken() const;
 	bool passedAnvils() const;       // every part is behind the anvils' front plane (x < 0)
-	// the test is over: every part is behind the anvils and none can touch an anvil within a frame step
-	// (plastic::mayTouchWithin). The parts may still meet the hammer (kineticAgainstHammer_j).
+	// the test is over: every part is behind the anvils and none can touch an anvil within a frame step, or 1 ms if the
+	// frame step is longer (plastic::mayTouchWithin); asked after every internal step. The parts may still meet the
+	// hammer (kineticAgainstHammer_j).
 	bool clear() const;
+	static constexpr double kClearHorizon_s = 1e-3;
 	// the parts' kinetic energy against the hammer, 1/2 sum m (plastic::relativeSpeedBound_m_s)^2 [J]: the most one
 	// collision of them with the hammer could dissipate now. A scale of what ending at clear() leaves out, not a bound
 	// over the rest of a run (gravity and the swing change the speeds, and they can meet again).
@@ -114,6 +116,7 @@ private:
 	void trackAfterStep(double h_s);
 
 	CharpyParameters m_parameters;
+	bool m_endedClear = false;  // a frame ended at the internal step that left the specimen clear (step())
 	plastic::ContactSubstepPolicy m_substeps{plastic::ContactSubstepSettings{0}};  // the frame's internal steps
 	CharpySection m_section;
 	std::unique_ptr<Impl> m_impl;  // Bullet's world objects, shapes and bodies

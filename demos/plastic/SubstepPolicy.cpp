@@ -549,7 +549,7 @@ std::vector<std::string> validate(const ContactSubstepSettings& settings)
 ContactSubstepPolicy::ContactSubstepPolicy(const ContactSubstepSettings& settings) : m_settings(settings), m_errors(validate(settings)) {}
 
 int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin,
-								  const TimeToTouch& timeToTouch, const TimeToRelease& timeToRelease)
+								  const TimeToTouch& timeToTouch, const TimeToRelease& timeToRelease, const Done& done)
 {
 	if (!(std::isfinite(frame_s) && frame_s > 0) || !m_errors.empty())
 	{
@@ -696,6 +696,11 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 		{
 			// after a step to a touch the clock's ticks count from the touch
 			m_phase_s = touching ? 0 : std::fmod(m_phase_s + piece, h);
+		}
+		if (done && done())
+		{
+			m_owed_s = remaining > 1e-12 * frame_s ? remaining : 0;
+			break;
 		}
 	}
 	return steps;

@@ -108,6 +108,7 @@ public:
 	using Spin = std::function<double()>;                      // the fastest angular speed of the bodies [rad/s]
 	using TimeToTouch = std::function<double(double horizon_s)>;  // when the first pair now apart touches [s]
 	using TimeToRelease = std::function<double(double horizon_s)>;  // when the first pressed contact ends [s]
+	using Done = std::function<bool()>;                              // is the scene's run over?
 
 	// settings that validate refuses are kept out: errors() says why, and advance steps nothing
 	explicit ContactSubstepPolicy(const ContactSubstepSettings& settings);
@@ -133,8 +134,11 @@ public:
 	// prediction is linear); the ticks count from there. With a free step, a frame (with what is owed) shorter than it
 	// is owed, not stepped, while no contact is near within the free step's shortest half longer than that time (one
 	// contact test per such frame), and is stepped as above once contact is near or the free step is reached.
+	// Given `done`, asked after every internal step: once it holds, the rest of the frame is owed and advance returns (a
+	// test that ends within a frame ends there, whatever the frame step).
 	int advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin = Spin(),
-				const TimeToTouch& timeToTouch = TimeToTouch(), const TimeToRelease& timeToRelease = TimeToRelease());
+				const TimeToTouch& timeToTouch = TimeToTouch(), const TimeToRelease& timeToRelease = TimeToRelease(),
+				const Done& done = Done());
 
 	// frame time not yet stepped: the world lags the frames by this much, less than one contact substep, or, out of
 	// contact, than the free step [s]

@@ -845,6 +845,29 @@ TEST(SubstepPolicy, OutOfContactFramesShorterThanTheFreeStepAreGatheredIntoOneSt
 	EXPECT_EQ(1u, notFinite.errors().size());
 }
 
+TEST(SubstepPolicy, AFrameEndsAtTheStepAfterWhichTheSceneIsDone)
+{
+	// in contact (1 ms substeps) a 10 ms frame whose scene is done after its fourth step: four steps, the other 6 ms
+	// owed; the next frame, with no `done`, steps them with its own
+	plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{1e-3});
+	const auto touching = [](double) { return true; };
+	int steps = 0;
+	double stepped = 0;
+	const auto step = [&](double h) {
+		steps++;
+		stepped += h;
+	};
+	EXPECT_EQ(4, policy.advance(0.01, touching, step, {}, {}, {}, [&] { return steps == 4; }));
+	EXPECT_NEAR(stepped, 4e-3, 1e-15);
+	EXPECT_NEAR(policy.owed_s(), 6e-3, 1e-15);
+	EXPECT_EQ(16, policy.advance(0.01, touching, step));
+	EXPECT_NEAR(stepped, 0.02, 1e-15);
+	EXPECT_NEAR(policy.owed_s(), 0.0, 1e-15);
+	// done after the frame's last step: nothing owed
+	EXPECT_EQ(10, policy.advance(0.01, touching, step, {}, {}, {}, [&] { return steps == 30; }));
+	EXPECT_NEAR(policy.owed_s(), 0.0, 1e-15);
+}
+
 TEST(SubstepPolicy, FarFromContactAFrameIsOneStep)
 {
 	BallAndWall s(10.0, 1.0);
