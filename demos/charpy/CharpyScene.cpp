@@ -576,9 +576,11 @@ void CharpyScene::step()
 	{
 		ended = [this] { return m_endedClear = clear(); };
 	}
+	// the frame that reaches the duration is stepped whole, not gathered with frames past it
+	const bool gather = m_time_s + m_substeps.owed_s() + frame < p.duration_s - 1e-12;
 	m_substeps.advance(
 		frame, [this](double horizon_s) { return nearContact(horizon_s); }, [this](double h_s) { internalStep(h_s); },
-		[this] { return fastestSpin_rad_s(); }, timeToTouch, timeToRelease, ended);
+		[this] { return fastestSpin_rad_s(); }, timeToTouch, timeToRelease, ended, gather);
 	m_lastFrameStep_s = frame;
 }
 

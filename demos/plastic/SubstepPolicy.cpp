@@ -549,7 +549,8 @@ std::vector<std::string> validate(const ContactSubstepSettings& settings)
 ContactSubstepPolicy::ContactSubstepPolicy(const ContactSubstepSettings& settings) : m_settings(settings), m_errors(validate(settings)) {}
 
 int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin,
-								  const TimeToTouch& timeToTouch, const TimeToRelease& timeToRelease, const Done& done)
+								  const TimeToTouch& timeToTouch, const TimeToRelease& timeToRelease, const Done& done,
+								  bool gather)
 {
 	if (!(std::isfinite(frame_s) && frame_s > 0) || !m_errors.empty())
 	{
@@ -564,7 +565,7 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 	{
 		double piece = remaining;
 		bool touching = false;
-		if (h > 0 && m_settings.free_step_s > remaining)
+		if (gather && h > 0 && m_settings.free_step_s > remaining)
 		{
 			// out of contact a frame shorter than the free step is gathered with the next ones: owed while no contact
 			// is near within the shortest of the free step's halves longer than it, so that one step of up to the free

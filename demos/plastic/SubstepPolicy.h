@@ -135,10 +135,11 @@ public:
 	// is owed, not stepped, while no contact is near within the free step's shortest half longer than that time (one
 	// contact test per such frame), and is stepped as above once contact is near or the free step is reached.
 	// Given `done`, asked after every internal step: once it holds, the rest of the frame is owed and advance returns (a
-	// test that ends within a frame ends there, whatever the frame step).
+	// test that ends within a frame ends there, whatever the frame step). With `gather` false the frame and what is
+	// owed are stepped whatever the free step (a run's last frame: the world reaches its end, not past it later).
 	int advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin = Spin(),
 				const TimeToTouch& timeToTouch = TimeToTouch(), const TimeToRelease& timeToRelease = TimeToRelease(),
-				const Done& done = Done());
+				const Done& done = Done(), bool gather = true);
 
 	// frame time not yet stepped: the world lags the frames by this much, less than one contact substep, or, out of
 	// contact, than the free step [s]

@@ -835,6 +835,15 @@ TEST(SubstepPolicy, OutOfContactFramesShorterThanTheFreeStepAreGatheredIntoOneSt
 		}
 	}
 	EXPECT_LT(steps.size(), 40u - 10u) << "4 ms of frames gathered into 4 steps";
+	// a frame not to be gathered (a run's last) is stepped with what is owed
+	plastic::ContactSubstepPolicy last(plastic::ContactSubstepSettings{6e-5, 0.25, 1e-3});
+	BallAndWall far(1.0, 1.0);
+	const auto farNear = [&](double horizon) { return far.near(horizon); };
+	int farSteps = 0;
+	EXPECT_EQ(0, last.advance(1e-4, farNear, [&](double) { farSteps++; }));
+	EXPECT_NEAR(last.owed_s(), 1e-4, 1e-15);
+	EXPECT_EQ(1, last.advance(1e-4, farNear, [&](double h) { EXPECT_NEAR(h, 2e-4, 1e-15); }, {}, {}, {}, {}, false));
+	EXPECT_EQ(0.0, last.owed_s());
 	// refused: shorter than the substep, or without substeps
 	const plastic::ContactSubstepPolicy shorter(plastic::ContactSubstepSettings{6e-5, 0.25, 1e-5});
 	ASSERT_EQ(1u, shorter.errors().size());
