@@ -32,8 +32,16 @@ SETTINGS = {"default": [],
 # of issue 25's frame steps: 0.1 ms, 1 ms and 1/60 s
 GATHERED = ["--solver=direct", "--speculative-contacts", "--contact-substep=7e-5", "--free-step=5e-3"]
 FRAME_STEPS_MS = {"0.1 ms": "1e-4", "1 ms": "1e-3", "1/60 s": repr(1.0 / 60.0)}
+
+
+def gathered_name(frame):
+    """the settings name of the gathered runs at a frame step of FRAME_STEPS_MS (matched whole: "0.1 ms frames" ends
+    with "1 ms frames")"""
+    return f"direct, speculative, 0.07 ms, free step 5 ms, {frame} frames"
+
+
 for _name, _dt in FRAME_STEPS_MS.items():
-    SETTINGS[f"direct, speculative, 0.07 ms, free step 5 ms, {_name} frames"] = GATHERED + [f"--dt={_dt}"]
+    SETTINGS[gathered_name(_name)] = GATHERED + [f"--dt={_dt}"]
 FIELDS = ["settings", "geometry", "mu", "loss_J", "plastic_J", "passed", "over_the_top", "accuracy", "steps", "end_time_s",
           "model_J", "deviation_pct", "booked_excess_J"]
 
@@ -167,7 +175,7 @@ def markdown(rows, command):
             lines.append(f"| {r['geometry']} | {r['mu']:.2f} | {fmt(r['loss_J'])} | {r['steps']} | {passed(r)} | "
                          f"{fmt(r['model_J'])} | {dev(r)} | {fmt(base['loss_J']) if base else '-'} | {fmt(r['booked_excess_J'])} |")
     if gathered:
-        frames = [f for f in FRAME_STEPS_MS if any(r["settings"].endswith(f"{f} frames") for r in gathered)]
+        frames = [f for f in FRAME_STEPS_MS if any(r["settings"] == gathered_name(f) for r in gathered)]
         lines += [
             "",
             "## The standard striker at every frame step: 0.07 ms contact substeps, frames gathered out of contact",
@@ -192,7 +200,7 @@ def markdown(rows, command):
             for mu in sorted({r["mu"] for r in gathered if r["geometry"] == geometry}):
                 cells = []
                 for f in frames:
-                    r = next((x for x in gathered if x["geometry"] == geometry and x["mu"] == mu and x["settings"].endswith(f"{f} frames")), None)
+                    r = next((x for x in gathered if x["geometry"] == geometry and x["mu"] == mu and x["settings"] == gathered_name(f)), None)
                     cells.append("-" if r is None else f"{fmt(r['loss_J'])} / {r['steps']} / {dev(r)}" + ("" if r["passed"] else f" ({passed(r)})"))
                 lines.append(f"| {geometry} | {mu:.2f} | " + " | ".join(cells) + " |")
     return "\n".join(lines) + "\n"

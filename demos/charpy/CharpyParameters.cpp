@@ -69,13 +69,18 @@ std::vector<std::string> validateCharpyParameters(const CharpyParameters& p)
 	{
 		scene::requireRange(errors, "contact-substep", p.contact_substep_s, 1e-7, 0.05, "s (or 0 = off)");
 	}
-	if (p.free_step_s != 0)
+	const bool substepValid = p.contact_substep_s == 0 || (p.contact_substep_s >= 1e-7 && p.contact_substep_s <= 0.05);
+	if (p.free_step_s != 0 && substepValid)
 	{
-		scene::requireRange(errors, "free-step", p.free_step_s, std::max(p.contact_substep_s, 1e-7), 1,
-							"s, at least the contact substep, with contact substeps on (or 0 = a step every frame)");
+		// (a bad contact substep is told above; the free step's range follows from it)
 		if (p.contact_substep_s == 0)
 		{
 			errors.push_back("free-step: " + scene::jsonNumber(p.free_step_s) + " needs contact substeps (--contact-substep > 0)");
+		}
+		else
+		{
+			scene::requireRange(errors, "free-step", p.free_step_s, p.contact_substep_s, 1,
+								"s, at least the contact substep (or 0 = a step every frame)");
 		}
 	}
 	if (p.ccd_motion_threshold_m != 0)

@@ -152,7 +152,10 @@ CharpyScene::CharpyScene(const CharpyParameters& parameters)
 		}
 		throw std::invalid_argument(text);
 	}
-	m_substeps = plastic::ContactSubstepPolicy(plastic::ContactSubstepSettings{parameters.contact_substep_s, plastic::ContactSubstepSettings().max_turn_per_step_rad, parameters.free_step_s});
+	plastic::ContactSubstepSettings substeps;
+	substeps.contact_substep_s = parameters.contact_substep_s;
+	substeps.free_step_s = parameters.free_step_s;
+	m_substeps = plastic::ContactSubstepPolicy(substeps);
 	scene::throwIfAny(m_substeps.errors());
 	m_section = computeCharpySection(parameters);
 	m_impl = std::make_unique<Impl>(parameters.solver);
@@ -569,8 +572,8 @@ void CharpyScene::step()
 		{ return plastic::timeToRelease_s(*m_world->getDispatcher(), m_contactMovers, m_contactAnvils, horizon_s); };
 	}
 	// a run that ends once the specimen is clear ends at the internal step that leaves it so, not at the frame's end:
-	// the frame step no longer changes where the test ends. The rest of that frame is owed; the frames after it (the
-	// browser steps on to the duration) step as any other
+	// the frame step moves the end only as far as the clear test's horizon does (at most 1 ms). The rest of that frame
+	// is owed; the frames after it (the browser steps on to the duration) step as any other
 	plastic::ContactSubstepPolicy::Done ended;
 	if (p.end_when_clear && !m_endedClear)
 	{

@@ -540,7 +540,15 @@ std::vector<std::string> validate(const ContactSubstepSettings& settings)
 	if (!(std::isfinite(free) && (free == 0 || (h > 0 && free >= h && free <= 1))))
 	{
 		std::ostringstream out;
-		out << "free_step_s: " << free << " is not in [contact-substep, 1] s with contact substeps on (or 0 = a step every frame)";
+		out << "free_step_s: " << free;
+		if (h > 0)
+		{
+			out << " is not in [" << h << ", 1] s (the contact substep to 1 s; or 0 = a step every frame)";
+		}
+		else
+		{
+			out << " needs contact substeps (contact_substep_s > 0; or 0 = a step every frame)";
+		}
 		errors.push_back(out.str());
 	}
 	return errors;
@@ -568,8 +576,10 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 		if (gather && h > 0 && m_settings.free_step_s > remaining)
 		{
 			// out of contact a frame shorter than the free step is gathered with the next ones: owed while no contact
-			// is near within the shortest of the free step's halves longer than it, so that one step of up to the free
-			// step is taken where a step a frame took ten (0.1 ms frames after a Charpy test's fold)
+			// is near within the shortest of the free step's halves longer than it, so that one step of about the free
+			// step is taken where a step a frame took ten (0.1 ms frames after a Charpy test's fold). Asked after steps
+			// in contact too (a second contact test a step there), so that a rest whose contact ended is gathered: not
+			// asking it there took a step more in some Charpy runs
 			double horizon = m_settings.free_step_s;
 			while (horizon / 2 > remaining && horizon / 2 > h)
 			{

@@ -89,7 +89,8 @@ struct ContactSubstepSettings
 	// bodies' spin): a pair of joined bodies spinning at 250 rad/s loses 0.9 % of its energy in 1/60 s steps and
 	// 0.02 % in 1 ms steps (the Charpy halves after the test); 0 = no bound
 	double max_turn_per_step_rad = 0.25;
-	// out of contact, frames shorter than this are gathered into one internal step of up to this length [s]: the world
+	// out of contact, frames shorter than this are gathered into one internal step of about this length [s] (up to it
+	// and a frame): the world
 	// lags the frames by less than it (as upstream's fixed-step stepSimulation lags its frames by less than its step),
 	// so the internal steps a test takes do not grow with the frame rate. The rest of a frame is owed while no contact
 	// is near within the shortest of this step's halves that is longer than the rest; needs contact substeps, and is
@@ -135,14 +136,15 @@ public:
 	// is owed, not stepped, while no contact is near within the free step's shortest half longer than that time (one
 	// contact test per such frame), and is stepped as above once contact is near or the free step is reached.
 	// Given `done`, asked after every internal step: once it holds, the rest of the frame is owed and advance returns (a
-	// test that ends within a frame ends there, whatever the frame step). With `gather` false the frame and what is
+	// test that ends within a frame ends there). A caller whose `done` holds frame after frame owes more each frame:
+	// pass it until it first holds (CharpyScene does), not after. With `gather` false the frame and what is
 	// owed are stepped whatever the free step (a run's last frame: the world reaches its end, not past it later).
 	int advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin = Spin(),
 				const TimeToTouch& timeToTouch = TimeToTouch(), const TimeToRelease& timeToRelease = TimeToRelease(),
 				const Done& done = Done(), bool gather = true);
 
 	// frame time not yet stepped: the world lags the frames by this much, less than one contact substep, or, out of
-	// contact, than the free step [s]
+	// contact, than the free step, and after `done` by the rest of that frame [s]
 	double owed_s() const { return m_owed_s; }
 
 	const ContactSubstepSettings& settings() const { return m_settings; }

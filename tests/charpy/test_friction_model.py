@@ -181,7 +181,20 @@ class FrictionModelTest(unittest.TestCase):
             self.assertEqual(done.returncode, 0, done.stderr)
             with open(os.path.join(out, "charpy-friction.csv"), newline="") as f:
                 rows = list(csv.DictReader(f))
+            with open(os.path.join(out, "FRICTION.md")) as f:
+                markdown = f.read()
         self.assertIn("direct, speculative, 0.06 ms", {r["settings"] for r in rows})
+        # the every-frame-step table shows each frame step's own run (the 0.1 ms runs' name ends with "1 ms frames": a
+        # suffix match showed them in the 1 ms column too)
+        table = markdown[markdown.index("## The standard striker at every frame step"):]
+        line = next(x for x in table.splitlines() if x.startswith("| standard | 0.10 |"))
+        cells = [c.strip() for c in line.strip("|").split("|")][2:]
+        frames = ("0.1 ms", "1 ms", "1/60 s")
+        self.assertEqual(len(cells), len(frames), line)
+        for frame, cell in zip(frames, cells):
+            run = next(r for r in rows if r["geometry"] == "standard" and r["settings"].endswith(f", {frame} frames"))
+            self.assertEqual(cell.split(" / ")[0], f"{float(run['loss_J']):.2f}", (frame, line))
+            self.assertEqual(cell.split(" / ")[1], run["steps"], (frame, line))
         for r in rows:
             self.assertIn(r["accuracy"], ("accurate", "did-not-pass", "over-the-top", "penetrated", "unstable"), r)
             self.assertGreater(float(r["end_time_s"]), 0, r)
