@@ -10,6 +10,7 @@ import subprocess
 import sys
 import tempfile
 import unittest
+from concurrent.futures import ThreadPoolExecutor
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 CI = os.path.join(HERE, "..", "..", "ci", "models")
@@ -24,6 +25,13 @@ def run(*flags):
     out = subprocess.run([RUNNER, "--method=plastic-hinge", "--json"] + list(flags), check=True,
                          capture_output=True, text=True).stdout
     return json.loads(out)
+
+
+def run_many(flag_lists):
+    """run(*flags) for each list of flags, as many at once as the machine has cores; the results by their flags"""
+    unique = list(dict.fromkeys(tuple(f) for f in flag_lists))
+    with ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+        return dict(zip(unique, pool.map(lambda flags: run(*flags), unique)))
 
 
 class FrictionModelTest(unittest.TestCase):
@@ -140,22 +148,31 @@ class FrictionModelTest(unittest.TestCase):
         converged = ("--solver=direct", "--speculative-contacts", "--contact-substep=2e-6", "--dt=1e-3", "--impact-speed=5.2")
         iso = ("--anvil-radius=0.001", "--anvil-taper=0.192")
         speeds = (5.1, 5.15, 5.2, 5.25, 5.3)
+        frames = ("1e-4", "1e-3", str(1.0 / 60.0))
+        mus = (0.05, 0.1, 0.15, 0.2, 0.25)
+
+        def coarse_of(frame):
+            return ("--solver=direct", "--speculative-contacts", "--contact-substep=7e-5", "--free-step=5e-3", f"--dt={frame}")
+        # the 160 runs at once on every core (they are independent), then checked in order
+        results = run_many([("--geometry=standard", *anvils, f"--friction={mu}", *converged) for anvils in ((), iso) for mu in mus]
+                           + [("--geometry=standard", *anvils, f"--friction={mu}", f"--impact-speed={v}", *coarse_of(frame))
+                              for frame in frames for anvils in ((), iso) for mu in mus for v in speeds])
         references = {}
-        for frame in ("1e-4", "1e-3", str(1.0 / 60.0)):
-            coarse = ("--solver=direct", "--speculative-contacts", "--contact-substep=7e-5", "--free-step=5e-3", f"--dt={frame}")
+        for frame in frames:
+            coarse = coarse_of(frame)
             model_errors = []
             for anvils in ((), iso):
                 model = CharpyFrictionModel(**dict(STANDARD, anvil_radius_m=0.001 if anvils else 0.0))
-                for mu in (0.05, 0.1, 0.15, 0.2, 0.25):
+                for mu in mus:
                     with self.subTest(frame=frame, anvils=anvils, mu=mu):
                         expected, _ = model.loss(mu)
                         if (anvils, mu) not in references:
-                            references[anvils, mu] = run("--geometry=standard", *anvils, f"--friction={mu}", *converged)["energy_loss_J"]
+                            references[anvils, mu] = results[("--geometry=standard", *anvils, f"--friction={mu}", *converged)]["energy_loss_J"]
                         reference = references[anvils, mu]
                         self.assertLess(abs(reference - expected) / expected, 0.03, (mu, reference, expected))
                         errors = []
                         for v in speeds:
-                            r = run("--geometry=standard", *anvils, f"--friction={mu}", f"--impact-speed={v}", *coarse)
+                            r = results[("--geometry=standard", *anvils, f"--friction={mu}", f"--impact-speed={v}", *coarse)]
                             self.assertTrue(r["passed_anvils"] and not r["over_the_top"], r)
                             self.assertLess(r["max_energy_gain_J"], 1e-4 * r["E0_J"], r)
                             self.assertLess(r["max_booked_excess_J"], 1e-3 * r["E0_J"], r)
