@@ -289,31 +289,29 @@ def report(rows, out_dir, command, source="the sweep CSV", peer=()):
     direct_methods = [m for m in METHOD_ORDER if any(r["method"] == m for r in direct)]
     disc = lambda r: fmt(discretisation_error(r, converged), "{:+.1f}")  # noqa: E731
     plastic_disc = lambda r: fmt(plastic_work_error(r, converged), "{:+.1f}")  # noqa: E731
+    def errors_section(what, chosen, columns):
+        """a direct-solve table: per method and frame step, the discretisation errors of loss and plastic work, and
+        the internal steps"""
+        return f"""### {what}: loss against the converged loss [%] / plastic work against the converged plastic work [%] / internal steps
+
+{table(chosen, direct_methods, columns, lambda r: f"{disc(r)} / {plastic_disc(r)} / {r.get('steps', '')}")}
+"""
     direct_sections = []
     for sub in direct_substeps:
         chosen = [r for r in direct if r["contact_substep_s"] == sub]
         what = "no contact substeps" if float(sub) == 0 else f"contact substep {float(sub) * 1000:g} ms"
-        direct_sections.append(f"""### {what}: loss against the converged loss [%] / plastic work against the converged plastic work [%] / internal steps
-
-{table(chosen, direct_methods, steps, lambda r: f"{disc(r)} / {plastic_disc(r)} / {r.get('steps', '')}")}
-""")
+        direct_sections.append(errors_section(what, chosen, steps))
     gathered_sections = []
     for sub in sorted({r["contact_substep_s"] for r in gathered}, key=float):
         chosen = [r for r in gathered if r["contact_substep_s"] == sub]
-        free = free_step_s(chosen[0]) * 1000
-        gathered_sections.append(f"""### contact substep {float(sub) * 1000:g} ms, free step {free:g} ms: loss against the converged loss [%] / plastic work against the converged plastic work [%] / internal steps
-
-{table(chosen, direct_methods, [s for s in steps if s != "auto"], lambda r: f"{disc(r)} / {plastic_disc(r)} / {r.get('steps', '')}")}
-""")
+        what = f"contact substep {float(sub) * 1000:g} ms, free step {free_step_s(chosen[0]) * 1000:g} ms"
+        gathered_sections.append(errors_section(what, chosen, [s for s in steps if s != "auto"]))
     spec_sections = []
     spec_substeps = sorted({r["contact_substep_s"] for r in spec}, key=float)
     # a substep run at one frame step only is a point of the landscape below, not a table of its own
     for sub in [s for s in spec_substeps if len({r["dt_ms"] for r in spec if r["contact_substep_s"] == s}) > 1]:
         chosen = [r for r in spec if r["contact_substep_s"] == sub]
-        spec_sections.append(f"""### contact substep {float(sub) * 1000:g} ms: loss against the converged loss [%] / plastic work against the converged plastic work [%] / internal steps
-
-{table(chosen, direct_methods, steps, lambda r: f"{disc(r)} / {plastic_disc(r)} / {r.get('steps', '')}")}
-""")
+        spec_sections.append(errors_section(f"contact substep {float(sub) * 1000:g} ms", chosen, steps))
     landscape_dt = f"{LANDSCAPE_DT_MS:g}"  # the frame step of the sweep's landscape runs, as its dt_ms column writes it
     landscape_rows = [r for r in spec if r["dt_ms"] == landscape_dt]
     landscape = ["| contact substep [ms] | " + " | ".join(direct_methods) + " |", "|---" * (len(direct_methods) + 1) + "|"]

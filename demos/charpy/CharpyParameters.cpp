@@ -65,11 +65,12 @@ std::vector<std::string> validateCharpyParameters(const CharpyParameters& p)
 	scene::requireRange(errors, "initial-energy", p.initial_energy_j, 0, 1e6, "J (0 = use release-angle)");
 	scene::requireRange(errors, "dt", p.dt_s, 1e-7, 0.05, "s");
 	scene::requireRange(errors, "auto-dt-coarse", p.auto_dt_coarse_s, 1e-6, 0.05, "s");
+	const size_t errorsBeforeSubstep = errors.size();
 	if (p.contact_substep_s != 0)
 	{
 		scene::requireRange(errors, "contact-substep", p.contact_substep_s, 1e-7, 0.05, "s (or 0 = off)");
 	}
-	const bool substepValid = p.contact_substep_s == 0 || (p.contact_substep_s >= 1e-7 && p.contact_substep_s <= 0.05);
+	const bool substepValid = errors.size() == errorsBeforeSubstep;
 	if (p.free_step_s != 0 && substepValid)
 	{
 		// (a bad contact substep is told above; the free step's range follows from it)

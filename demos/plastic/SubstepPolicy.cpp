@@ -439,16 +439,16 @@ double timeToRelease_s(btDispatcher& dispatcher, const std::vector<const btColli
 		{
 			continue;
 		}
-		const btVector3 half = static_cast<const btBoxShape*>(box->getCollisionShape())->getHalfExtentsWithMargin();
-		const btMatrix3x3& basis = box->getWorldTransform().getBasis();
-		const btRigidBody* boxBody = movingBody(box);
-		const btRigidBody* otherBody = movingBody(other);
 		// a pressed contact (a point of it carried an impulse) ends when the last of its points that touch has run off
 		// the face: the load of a face's points is statically indeterminate, and one that carried none still touches
 		if (!carriedImpulse(*manifold))
 		{
 			continue;
 		}
+		const btVector3 half = static_cast<const btBoxShape*>(box->getCollisionShape())->getHalfExtentsWithMargin();
+		const btMatrix3x3& basis = box->getWorldTransform().getBasis();
+		const btRigidBody* boxBody = movingBody(box);
+		const btRigidBody* otherBody = movingBody(other);
 		const btScalar touching = btScalar(0.01) * manifold->getContactBreakingThreshold();
 		double last = -1;
 		for (int j = 0; j < manifold->getNumContacts(); j++)

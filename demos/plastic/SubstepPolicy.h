@@ -90,11 +90,10 @@ struct ContactSubstepSettings
 	// 0.02 % in 1 ms steps (the Charpy halves after the test); 0 = no bound
 	double max_turn_per_step_rad = 0.25;
 	// out of contact, frames shorter than this are gathered into one internal step of about this length [s] (up to it
-	// and a frame): the world
-	// lags the frames by less than it (as upstream's fixed-step stepSimulation lags its frames by less than its step),
-	// so the internal steps a test takes do not grow with the frame rate. The rest of a frame is owed while no contact
-	// is near within the shortest of this step's halves that is longer than the rest; needs contact substeps, and is
-	// at least one. 0 = a step every frame
+	// and a frame): the world lags the frames by less than it (as upstream's fixed-step stepSimulation lags its frames
+	// by less than its step), so the internal steps a test takes do not grow with the frame rate. The rest of a frame
+	// is owed while no contact is near within the shortest of this step's halves that is longer than the rest; needs
+	// contact substeps, and is at least one. 0 = a step every frame
 	double free_step_s = 0;
 };
 
