@@ -149,5 +149,45 @@ TEST_P(LongerStepDrift, TheSplitPassInEveryStepLosesMoreInSteadyStepsThanTheVelo
 	EXPECT_GT(lostSplit, 2 * lostBaumgarte) << "lost " << lostSplit << " J split, " << lostBaumgarte << " J with the bias";
 }
 
+TEST_P(LongerStepDrift, AMidLengthStepAtTheEndOfTheWindowStartsOneOfItsOwn)
+{
+	// 0.7 ms of 2 us steps after the 1.3 ms one, then a 0.64 ms step that is itself split and outlasts the 0.6 ms left
+	// of the first step's time: the 2 us steps after it are compared with it (helper-49's review: they went back to the
+	// bias, 2.49 J of 201 J, against 2.63 J with the bias throughout)
+	std::vector<double> steps(10, 1e-4);
+	steps.push_back(1.3e-3);
+	steps.insert(steps.end(), 350, 2e-6);
+	steps.push_back(6.4e-4);
+	steps.insert(steps.end(), 20, 2e-6);
+	Pendulum baumgarte(GetParam(), Correction::Baumgarte);
+	Pendulum after(GetParam(), Correction::AfterLongerSteps);
+	const double start = after.kineticEnergy_j();
+	EXPECT_GT(baumgarte.largestRise_j(steps), 2e-3 * start) << "the control: the bias kicks after the 0.64 ms step";
+	EXPECT_LT(after.largestRise_j(steps), 1e-4 * start);
+}
+
+TEST_P(LongerStepDrift, WhichStepsAreSplit)
+{
+	// the rule, step by step: split in a step shorter than half of a longer one solved within that longer one's own
+	// length of time before
+	Pendulum pendulum(GetParam(), Correction::AfterLongerSteps);
+	auto step = [&pendulum](double h)
+	{
+		pendulum.setup.world.stepSimulation(btScalar(h), 0);
+		return pendulum.pivot->getSplitPositionCorrectionOfThisStep();
+	};
+	for (int i = 0; i < 10; i++) EXPECT_FALSE(step(1e-4)) << "steady steps";
+	EXPECT_FALSE(step(0.7e-4)) << "a step of 0.7 of the one before";
+	EXPECT_FALSE(step(0.35e-4)) << "exactly half of the one before";
+	EXPECT_TRUE(step(0.17e-4)) << "less than half of the 0.35e-4 s step";
+	EXPECT_FALSE(step(1.3e-3)) << "a longer step";
+	int split = 0;
+	while (step(2e-6) && split < 1000) split++;
+	// 1.3 ms of 2 us steps (and the 0.17e-4 s step's window, 17 us, is long closed)
+	EXPECT_GE(split, 649);
+	EXPECT_LE(split, 651);
+	EXPECT_FALSE(step(2e-6)) << "the 2 us steps are now the steps compared with";
+}
+
 INSTANTIATE_TEST_SUITE_P(BothSolvers, LongerStepDrift, ::testing::Values(false, true),
 						 [](const ::testing::TestParamInfo<bool>& info) { return info.param ? "Direct" : "SequentialImpulse"; });
