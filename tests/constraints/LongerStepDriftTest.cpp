@@ -6,89 +6,27 @@
 // energy, against the energy it starts with, under sequential impulse and the direct solve.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "../common/SolverWorld.h"
-#include "btBulletDynamicsCommon.h"
+#include "../common/TurningPendulum.h"
 
 namespace
 {
-constexpr double kMass_kg = 20;
-constexpr double kArm_m = 0.8;
-constexpr double kSpin_rad_s = 5.6;
+using Correction = PivotCorrection;
 
-enum class Correction
-{
-	Baumgarte,        // upstream: the rows' velocity bias in every step
-	AfterLongerSteps,  // setSplitPositionCorrectionAfterLongerSteps(true)
-	Split,            // setSplitPositionCorrection(true): the split pass in every step
-};
-
+// the rig in a world of either solver
 struct Pendulum
 {
 	SolverWorld setup;
-	btBoxShape shape{btVector3(0.05, 0.05, 0.05)};
-	std::unique_ptr<btRigidBody> body;
-	std::unique_ptr<btHingeConstraint> pivot;
-
-	Pendulum(bool direct, Correction correction) : setup(direct)
-	{
-		setup.world.setGravity(btVector3(0, 0, 0));
-		btVector3 inertia;
-		shape.calculateLocalInertia(btScalar(kMass_kg), inertia);
-		btRigidBody::btRigidBodyConstructionInfo info(btScalar(kMass_kg), nullptr, &shape, inertia);
-		info.m_startWorldTransform.setIdentity();
-		info.m_startWorldTransform.setOrigin(btVector3(btScalar(kArm_m), 0, 0));
-		body = std::make_unique<btRigidBody>(info);
-		body->setActivationState(DISABLE_DEACTIVATION);
-		// turning about the world's origin: v = w x r
-		body->setAngularVelocity(btVector3(0, 0, btScalar(kSpin_rad_s)));
-		body->setLinearVelocity(btVector3(0, btScalar(kSpin_rad_s * kArm_m), 0));
-		setup.world.addRigidBody(body.get(), 0, 0);
-		pivot = std::make_unique<btHingeConstraint>(*body, btVector3(btScalar(-kArm_m), 0, 0), btVector3(0, 0, 1));
-		pivot->setSplitPositionCorrection(correction == Correction::Split);
-		pivot->setSplitPositionCorrectionAfterLongerSteps(correction == Correction::AfterLongerSteps);
-		setup.world.addConstraint(pivot.get(), true);
-	}
-	~Pendulum()
-	{
-		setup.world.removeConstraint(pivot.get());
-		setup.world.removeRigidBody(body.get());
-	}
-
-	double kineticEnergy_j() const
-	{
-		const btVector3 w = body->getAngularVelocity();
-		const btVector3 local = body->getWorldTransform().getBasis().transpose() * w;
-		const btVector3 I = body->getLocalInertia();
-		return 0.5 * kMass_kg * double(body->getLinearVelocity().length2()) +
-			   0.5 * double(I.x() * local.x() * local.x() + I.y() * local.y() * local.y() + I.z() * local.z() * local.z());
-	}
-	double pivotDrift_m() const { return double(body->getCenterOfMassPosition().length()) - kArm_m; }
-
-	// steps the world through the given steps; the largest rise of its kinetic energy over the one it started with [J]
-	double largestRise_j(const std::vector<double>& steps_s)
-	{
-		const double start = kineticEnergy_j();
-		double rise = 0;
-		for (double h : steps_s)
-		{
-			setup.world.stepSimulation(btScalar(h), 0);
-			rise = std::max(rise, kineticEnergy_j() - start);
-		}
-		return rise;
-	}
+	TurningPendulum rig;
+	Pendulum(bool direct, Correction correction) : setup(direct), rig(setup.world, correction) {}
+	double kineticEnergy_j() const { return rig.kineticEnergy_j(); }
+	double largestRise_j(const std::vector<double>& steps_s) { return rig.largestRise_j(steps_s); }
 };
 
-std::vector<double> gatheredThenShort()
-{
-	std::vector<double> steps(10, 1e-4);
-	steps.push_back(1.3e-3);
-	steps.insert(steps.end(), 20, 2e-6);
-	return steps;
-}
+std::vector<double> gatheredThenShort() { return TurningPendulum::gatheredThenShortSteps(); }
 
 class LongerStepDrift : public ::testing::TestWithParam<bool>
 {
@@ -111,7 +49,7 @@ TEST_P(LongerStepDrift, ItsDriftIsCorrectedWithoutMomentumInTheShortStepsAfterIt
 	const double rise = pendulum.largestRise_j(gatheredThenShort());
 	EXPECT_LT(rise, 1e-3 * start) << "kinetic energy " << start << " J";
 	// and the drift is corrected, not left: the split pass moved the body back onto its pivot
-	EXPECT_LT(std::fabs(pendulum.pivotDrift_m()), 2e-6);
+	EXPECT_LT(std::fabs(pendulum.rig.pivotDrift_m()), 2e-6);
 }
 
 TEST_P(LongerStepDrift, SteadyStepsKeepTheVelocityBiasBitForBit)
@@ -124,18 +62,18 @@ TEST_P(LongerStepDrift, SteadyStepsKeepTheVelocityBiasBitForBit)
 		upstream.setup.world.stepSimulation(btScalar(1e-4), 0);
 		after.setup.world.stepSimulation(btScalar(1e-4), 0);
 	}
-	const btTransform& a = upstream.body->getWorldTransform();
-	const btTransform& b = after.body->getWorldTransform();
+	const btTransform& a = upstream.rig.body.getWorldTransform();
+	const btTransform& b = after.rig.body.getWorldTransform();
 	EXPECT_EQ(a.getOrigin(), b.getOrigin());
 	EXPECT_EQ(a.getRotation(), b.getRotation());
-	EXPECT_EQ(upstream.body->getLinearVelocity(), after.body->getLinearVelocity());
+	EXPECT_EQ(upstream.rig.body.getLinearVelocity(), after.rig.body.getLinearVelocity());
 }
 
 TEST_P(LongerStepDrift, TheSplitPassInEveryStepLosesMoreInSteadyStepsThanTheVelocityBias)
 {
 	// why the split pass is kept for the steps after a longer one: a velocity-level pivot corrected without momentum in
 	// every step loses the square of its turn a step, where the bias gives some of it back (steps of 10 mrad)
-	const double h = 0.01 / kSpin_rad_s;
+	const double h = 0.01 / TurningPendulum::kSpin_rad_s;
 	Pendulum baumgarte(GetParam(), Correction::Baumgarte);
 	Pendulum split(GetParam(), Correction::Split);
 	const double start = baumgarte.kineticEnergy_j();
@@ -174,7 +112,7 @@ TEST_P(LongerStepDrift, WhichStepsAreSplit)
 	auto step = [&pendulum](double h)
 	{
 		pendulum.setup.world.stepSimulation(btScalar(h), 0);
-		return pendulum.pivot->getSplitPositionCorrectionOfThisStep();
+		return pendulum.rig.pivot.getSplitPositionCorrectionOfThisStep();
 	};
 	for (int i = 0; i < 10; i++) EXPECT_FALSE(step(1e-4)) << "steady steps";
 	EXPECT_FALSE(step(0.7e-4)) << "a step of 0.7 of the one before";

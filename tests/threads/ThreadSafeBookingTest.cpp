@@ -3,7 +3,6 @@
 // chunks and the chunks may run in any order and on any thread. The booking must not depend on that.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -14,6 +13,7 @@
 #include "BulletCollision/CollisionDispatch/btSimulationIslandManager.h"
 #include "BulletDynamics/ConstraintSolver/btSequentialImpulseConstraintSolverMt.h"
 #include "LinearMath/btThreads.h"
+#include "../common/TurningPendulum.h"
 
 #if !BT_THREADSAFE
 #error "this test needs the BT_THREADSAFE build of the patched libraries"
@@ -231,40 +231,14 @@ TEST(ThreadSafeBooking, ALongerStepsDriftIsCorrectedWithoutMomentumOnTheBatchedS
 	btSetTaskScheduler(btGetSequentialTaskScheduler());
 	const int batching = btSequentialImpulseConstraintSolverMt::s_minimumContactManifoldsForBatching;
 	btSequentialImpulseConstraintSolverMt::s_minimumContactManifoldsForBatching = 0;  // batch a world without contacts
-	auto largestRise = [](bool mode)
+	auto largestRise = [](PivotCorrection correction)
 	{
 		MtWorld mt;
-		btBoxShape cube(btVector3(0.05, 0.05, 0.05));
-		btVector3 inertia;
-		cube.calculateLocalInertia(20, inertia);
-		btRigidBody::btRigidBodyConstructionInfo info(20, nullptr, &cube, inertia);
-		info.m_startWorldTransform.setIdentity();
-		info.m_startWorldTransform.setOrigin(btVector3(0.8, 0, 0));
-		btRigidBody body(info);
-		body.setActivationState(DISABLE_DEACTIVATION);
-		body.setAngularVelocity(btVector3(0, 0, 5.6));
-		body.setLinearVelocity(btVector3(0, btScalar(5.6 * 0.8), 0));
-		mt.world.addRigidBody(&body, 0, 0);
-		btHingeConstraint pivot(body, btVector3(-0.8, 0, 0), btVector3(0, 0, 1));
-		pivot.setSplitPositionCorrectionAfterLongerSteps(mode);
-		mt.world.addConstraint(&pivot, true);
-		auto energy = [&body]() { return 0.5 * 20 * double(body.getLinearVelocity().length2()) + 0.5 * double(body.getLocalInertia().z() * body.getAngularVelocity().z() * body.getAngularVelocity().z()); };
-		const double start = energy();
-		std::vector<double> steps(10, 1e-4);
-		steps.push_back(1.3e-3);
-		steps.insert(steps.end(), 20, 2e-6);
-		double rise = 0;
-		for (double h : steps)
-		{
-			mt.world.stepSimulation(btScalar(h), 0);
-			rise = std::max(rise, energy() - start);
-		}
-		mt.world.removeConstraint(&pivot);
-		mt.world.removeRigidBody(&body);
-		return rise / start;
+		TurningPendulum pendulum(mt.world, correction);
+		return pendulum.largestRise_j(TurningPendulum::gatheredThenShortSteps()) / pendulum.kineticEnergy_j();
 	};
-	const double without = largestRise(false);
-	const double with = largestRise(true);
+	const double without = largestRise(PivotCorrection::Baumgarte);
+	const double with = largestRise(PivotCorrection::AfterLongerSteps);
 	btSequentialImpulseConstraintSolverMt::s_minimumContactManifoldsForBatching = batching;
 	EXPECT_GT(without, 0.05) << "the control: the velocity bias kicks the pendulum";
 	EXPECT_LT(with, 1e-3);
