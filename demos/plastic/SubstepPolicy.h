@@ -76,6 +76,16 @@ double timeToTouch_s(const std::vector<const btCollisionObject*>& movers, const 
 double timeToRelease_s(btDispatcher& dispatcher, const std::vector<const btCollisionObject*>& movers,
 					   const std::vector<const btCollisionObject*>& others, double horizon_s);
 
+// The fastest speed [m/s], by relativeSpeedBound_m_s, of a body of `movers` against an object of `others` among the
+// pairs in or near contact: pairs whose manifold (as the dispatcher holds them) has a point, and pairs that
+// mayTouchWithin horizon_s (with the same clearance and speculative reach); 0 when there is none. A contact step in
+// which no such pair moves more than a distance d against the other is at most d over this speed long: what a contact
+// sees in a step (the turn of its normal, the slide of its points, the gap it closes) is bounded by that distance,
+// whatever the step.
+double contactSpeed_m_s(btDispatcher& dispatcher, const std::vector<const btCollisionObject*>& movers,
+						const std::vector<const btCollisionObject*>& others, double horizon_s, double clearance_m = 0.001,
+						double speculativeReach_m = 0);
+
 // Whether a contact point between a body of `movers` and one of `others` carried an impulse in the world's last
 // step (their manifolds as the dispatcher holds them): a pair pressed together, whose forces a longer step would
 // change, as against one that touches only through speculative points that hold nothing.
@@ -95,6 +105,12 @@ struct ContactSubstepSettings
 	// is owed while no contact is near within the shortest of this step's halves that is longer than the rest; needs
 	// contact substeps, and is at least one. 0 = a step every frame
 	double free_step_s = 0;
+	// in or near contact, a piece longer than the substep within which the pairs in or near contact move at most this
+	// far against each other (given `contactSpeed`: their fastest speed times the piece) is one step [m]: a slow
+	// contact (a hammer stalled in a specimen, a specimen at rest on its supports) is stepped as far as its motion
+	// allows, not at the substep. Set to the speculative contacts' reach, no such step closes more than the contacts
+	// hold. 0 = every step in or near contact is the substep
+	double contact_travel_m = 0;
 };
 
 // Every violated setting as "name: value is not in range" text; empty when valid.
@@ -109,6 +125,7 @@ public:
 	using TimeToTouch = std::function<double(double horizon_s)>;  // when the first pair now apart touches [s]
 	using TimeToRelease = std::function<double(double horizon_s)>;  // when the first pressed contact ends [s]
 	using Done = std::function<bool()>;                              // is the scene's run over?
+	using ContactSpeed = std::function<double(double horizon_s)>;   // fastest pair in or near contact [m/s]
 
 	// settings that validate refuses are kept out: errors() says why, and advance steps nothing
 	explicit ContactSubstepPolicy(const ContactSubstepSettings& settings);
@@ -138,9 +155,13 @@ public:
 	// test that ends within a frame ends there). A caller whose `done` holds frame after frame owes more each frame:
 	// pass it until it first holds (CharpyScene does), not after. With `gather` false the frame and what is
 	// owed are stepped whatever the free step (a run's last frame: the world reaches its end, not past it later).
+	// With contact_travel_m and `contactSpeed`, a piece longer than a substep that is near contact is one step when the
+	// pairs move at most contact_travel_m in it (the halving stops there); such a step ends at a touch or a release
+	// within it as a substep does (at least half, or a quarter, of a substep in), and the clock's ticks count from its
+	// end.
 	int advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin = Spin(),
 				const TimeToTouch& timeToTouch = TimeToTouch(), const TimeToRelease& timeToRelease = TimeToRelease(),
-				const Done& done = Done(), bool gather = true);
+				const Done& done = Done(), bool gather = true, const ContactSpeed& contactSpeed = ContactSpeed());
 
 	// frame time not yet stepped: the world lags the frames by this much, less than one contact substep, or, out of
 	// contact, than the free step, and after `done` by the rest of that frame [s]

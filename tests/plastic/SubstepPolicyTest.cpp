@@ -345,6 +345,48 @@ TEST(SubstepPolicy, AContactIsPressedWhileItCarriesAnImpulse)
 	world.removeRigidBody(&floor);
 }
 
+TEST(SubstepPolicy, TheContactSpeedIsTheFastestPairInOrNearContact)
+{
+	// a ball resting on a static floor, rolled along it at 0.2 m/s (spin 2 rad/s; its reach is its box's corner,
+	// 0.1 sqrt(3) m), and a second ball
+	// 10 mm from a static wall closing on it at 10 m/s: within 0.5 ms only the rolling ball is in contact (its floor
+	// manifold), 0.2 m/s plus 2 rad/s x 0.173 m; within 2 ms the second ball can touch the wall too: 10 m/s (the floor
+	// and its ball 10 m from the wall and its ball)
+	btDefaultCollisionConfiguration configuration;
+	btCollisionDispatcher dispatcher(&configuration);
+	btDbvtBroadphase broadphase;
+	btSequentialImpulseConstraintSolver solver;
+	btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
+	btBoxShape slabShape(btVector3(1, btScalar(0.1), 1));
+	btTransform t;
+	t.setIdentity();
+	t.setOrigin(btVector3(0, btScalar(-0.1), 10));
+	btRigidBody floor(0, nullptr, &slabShape);
+	floor.setWorldTransform(t);
+	world.addRigidBody(&floor);
+	btSphereShape ballShape(btScalar(0.1));
+	btRigidBody ball(1, nullptr, &ballShape, btVector3(btScalar(0.004), btScalar(0.004), btScalar(0.004)));
+	t.setOrigin(btVector3(0, btScalar(0.1), 10));
+	ball.setWorldTransform(t);
+	world.addRigidBody(&ball);
+	world.performDiscreteCollisionDetection();
+	ASSERT_EQ(1, dispatcher.getNumManifolds());
+	ball.setLinearVelocity(btVector3(btScalar(0.2), 0, 0));
+	ball.setAngularVelocity(btVector3(0, 0, -2));
+	BallAndWall s(0.01, 10.0);
+	const std::vector<const btCollisionObject*> movers{&ball, s.ball.get()}, others{&floor, s.wall.get()};
+	const double rolling = 0.2 + 2 * 0.1 * std::sqrt(3.0);
+	EXPECT_NEAR(plastic::contactSpeed_m_s(dispatcher, movers, others, 5e-4, 0.0), rolling, 1e-4);
+	EXPECT_NEAR(plastic::contactSpeed_m_s(dispatcher, movers, others, 2e-3, 0.0), 10.0, 1e-4);
+	// moving away from the wall it is no pair near contact, however fast
+	s.ball->setLinearVelocity(btVector3(-10, 0, 0));
+	EXPECT_NEAR(plastic::contactSpeed_m_s(dispatcher, movers, others, 2e-3, 0.0), rolling, 1e-4);
+	// nothing in or near contact
+	EXPECT_EQ(plastic::contactSpeed_m_s(dispatcher, {s.ball.get()}, {s.wall.get()}, 2e-3, 0.0), 0.0);
+	world.removeRigidBody(&ball);
+	world.removeRigidBody(&floor);
+}
+
 TEST(SubstepPolicy, TheTimeToTouchIsTheGapOverTheClosingSpeedAlongTheNormal)
 {
 	BallAndWall s(0.01, 10.0);  // touches after 1 ms
@@ -928,6 +970,107 @@ TEST(SubstepPolicy, FarFromContactNoStepTurnsABodyMoreThanTheBound)
 	EXPECT_NEAR(steps.front(), 2e-5, 1e-15);
 }
 
+TEST(SubstepPolicy, AContactSlowerThanTheTravelIsSteppedAsFarAsItsSpeedAllows)
+{
+	// in contact all along (a specimen at rest on its supports, a hammer stalled in it), 1 ms substeps, a travel of
+	// 1 mm: what is left of a 10 ms frame is cut in halves only until its pairs move at most 1 mm in a piece (at
+	// 0.3 m/s: 10 -> 5 -> 2.5 ms, then 7.5 -> 3.75 -> 1.875 ms, then 5.625 -> 2.8125 ms), and no further than a
+	// substep; without the travel, or without the pairs' speed, it is ten substeps
+	const auto touching = [](double) { return true; };
+	const struct
+	{
+		double speed_m_s;
+		std::vector<double> steps_s;
+	} cases[] = {{0.05, {10e-3}}, {0.3, {2.5e-3, 1.875e-3, 2.8125e-3, 2.8125e-3}}, {2.0, std::vector<double>(10, 1e-3)}};
+	for (const auto& c : cases)
+	{
+		plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{1e-3, 0.25, 0, 1e-3});
+		ASSERT_TRUE(policy.errors().empty());
+		std::vector<double> steps, asked;
+		const auto speed = [&](double horizon_s)
+		{
+			asked.push_back(horizon_s);
+			return c.speed_m_s;
+		};
+		policy.advance(
+			10e-3, touching, [&](double h) { steps.push_back(h); }, {}, {}, {}, {}, true, speed);
+		ASSERT_EQ(steps.size(), c.steps_s.size()) << c.speed_m_s;
+		for (size_t i = 0; i < steps.size(); i++)
+		{
+			EXPECT_NEAR(steps[i], c.steps_s[i], 1e-12) << c.speed_m_s << " m/s, step " << i;
+		}
+		EXPECT_FALSE(asked.empty());
+		EXPECT_NEAR(policy.owed_s(), 0, 1e-12);
+	}
+	for (const double travel_m : {0.0, 1e-3})
+	{
+		plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{1e-3, 0.25, 0, travel_m});
+		std::vector<double> steps;
+		const auto step = [&](double h) { steps.push_back(h); };
+		if (travel_m > 0)
+		{
+			policy.advance(10e-3, touching, step);  // no speed given
+		}
+		else
+		{
+			policy.advance(
+				10e-3, touching, step, {}, {}, {}, {}, true, [](double) { return 0.0; });
+		}
+		EXPECT_EQ(steps, std::vector<double>(10, 1e-3)) << travel_m;
+	}
+}
+
+TEST(SubstepPolicy, ATravelStepEndsTwoSubstepsBeforeATouchWhichSubstepsMeet)
+{
+	// the ball closes on the wall at 10 m/s, 55 mm away (5.5 ms); the pairs in contact are slow (0.05 m/s), so the
+	// 10 ms frame could be one step: it ends two substeps before the touch (3.5 ms), and the touch is met by substeps
+	// (the last of them steps to the touch, in one step or two equal ones), not by a step predicted from the end of a
+	// long one
+	BallAndWall s(55e-3, 10.0);
+	plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{1e-3, 0.25, 0, 1e-3});
+	std::vector<double> steps;
+	const auto timeToTouch = [&](double horizon_s) { return plastic::timeToTouch_s({s.ball.get()}, {s.wall.get()}, horizon_s, 1e-9); };
+	policy.advance(
+		10e-3, [](double) { return true; }, [&](double h) { steps.push_back(h); s.move(h); }, {}, timeToTouch, {}, {}, true,
+		[](double) { return 0.05; });
+	ASSERT_GE(steps.size(), 3u);
+	EXPECT_NEAR(steps[0], 3.5e-3, 1e-9);
+	EXPECT_NEAR(steps[1], 1e-3, 1e-9);
+	double t = steps[0] + steps[1];
+	size_t i = 2;
+	for (; i < steps.size() && t < 5.5e-3 - 1e-6; i++)
+	{
+		EXPECT_LE(steps[i], 1e-3 + 1e-12) << "step " << i;
+		t += steps[i];
+	}
+	EXPECT_NEAR(t, 5.5e-3, 1e-6);  // a step ends at the touch
+	EXPECT_LE(i, 4u);
+}
+
+TEST(SubstepPolicy, ASlowContactsFramesAreGatheredAsFramesOutOfContactAre)
+{
+	// 1 ms frames, a 5 ms free step, a travel of 1 mm: a contact moving 0.1 m/s (0.5 mm in the free step) is stepped
+	// once every five frames, 5 ms at a time; one moving 1 m/s steps every frame, in one step (1 mm)
+	for (const double speed_m_s : {0.1, 1.0})
+	{
+		plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{1e-4, 0.25, 5e-3, 1e-3});
+		ASSERT_TRUE(policy.errors().empty());
+		std::vector<double> steps;
+		for (int frame = 0; frame < 10; frame++)
+		{
+			policy.advance(
+				1e-3, [](double) { return true; }, [&](double h) { steps.push_back(h); }, {}, {}, {}, {}, true,
+				[speed_m_s](double) { return speed_m_s; });
+		}
+		const std::vector<double> expected = speed_m_s < 0.5 ? std::vector<double>(2, 5e-3) : std::vector<double>(10, 1e-3);
+		ASSERT_EQ(steps.size(), expected.size()) << speed_m_s;
+		for (size_t i = 0; i < steps.size(); i++)
+		{
+			EXPECT_NEAR(steps[i], expected[i], 1e-12) << speed_m_s << " m/s, step " << i;
+		}
+	}
+}
+
 TEST(SubstepPolicy, BadSettingsAreRefusedByName)
 {
 	int steps = 0;
@@ -944,6 +1087,13 @@ TEST(SubstepPolicy, BadSettingsAreRefusedByName)
 	const plastic::ContactSubstepPolicy badTurn(plastic::ContactSubstepSettings{1e-5, -0.1});
 	ASSERT_EQ(1u, badTurn.errors().size());
 	EXPECT_NE(badTurn.errors().front().find("max_turn_per_step_rad: -0.1 is not in [0, pi] rad"), std::string::npos) << badTurn.errors().front();
+	for (const double travel_m : {-1e-3, double(NAN), 2.0})
+	{
+		const plastic::ContactSubstepPolicy badTravel(plastic::ContactSubstepSettings{1e-5, 0.25, 0, travel_m});
+		ASSERT_EQ(1u, badTravel.errors().size()) << travel_m;
+		EXPECT_NE(badTravel.errors().front().find("contact_travel_m: "), std::string::npos) << badTravel.errors().front();
+		EXPECT_NE(badTravel.errors().front().find("is not in [0, 1] m"), std::string::npos) << badTravel.errors().front();
+	}
 	plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{0});
 	EXPECT_TRUE(policy.errors().empty());
 	EXPECT_EQ(-1, policy.advance(0, far, step));
