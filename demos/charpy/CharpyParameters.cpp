@@ -84,6 +84,17 @@ std::vector<std::string> validateCharpyParameters(const CharpyParameters& p)
 								"s, at least the contact substep (or 0 = a step every frame)");
 		}
 	}
+	if (p.contact_travel_m != 0 && substepValid)
+	{
+		if (p.contact_substep_s == 0)
+		{
+			errors.push_back("contact-travel: " + scene::jsonNumber(p.contact_travel_m) + " needs contact substeps (--contact-substep > 0)");
+		}
+		else
+		{
+			scene::requireRange(errors, "contact-travel", p.contact_travel_m, 1e-7, 1, "m (or 0 = every step in contact is the substep)");
+		}
+	}
 	if (p.ccd_motion_threshold_m != 0)
 	{
 		scene::requireRange(errors, "ccd-motion-threshold", p.ccd_motion_threshold_m, 1e-7, 1, "m (or 0 = off)");

@@ -155,6 +155,7 @@ CharpyScene::CharpyScene(const CharpyParameters& parameters)
 	plastic::ContactSubstepSettings substeps;
 	substeps.contact_substep_s = parameters.contact_substep_s;
 	substeps.free_step_s = parameters.free_step_s;
+	substeps.contact_travel_m = parameters.contact_travel_m;
 	m_substeps = plastic::ContactSubstepPolicy(substeps);
 	scene::throwIfAny(m_substeps.errors());
 	m_section = computeCharpySection(parameters);
@@ -535,6 +536,13 @@ bool CharpyScene::nearContact(double horizon_s) const
 		   plastic::mayTouchWithin(m_contactMovers, m_contactOthers, horizon_s, nearClearance_m(m_parameters), speculativeReach_m());
 }
 
+double CharpyScene::contactSpeed_m_s(double horizon_s) const
+{
+	SpecimenLengthScale scale(m_parameters.specimen_width_m);
+	return plastic::contactSpeed_m_s(*m_world->getDispatcher(), m_contactMovers, m_contactOthers, horizon_s,
+									 nearClearance_m(m_parameters), m_parameters.speculative_contacts ? speculativeReach_m() : 0);
+}
+
 double CharpyScene::timeToTouch_s(double horizon_s) const
 {
 	// a pair within 1 % of the speculative reach touches
@@ -587,9 +595,16 @@ void CharpyScene::step()
 	}
 	// the frame that reaches the duration is stepped whole, not gathered with frames past it
 	const bool gather = m_time_s + m_substeps.owed_s() + frame < p.duration_s - 1e-12;
+	// and with a contact travel, a slow contact (a hammer stalled in the specimen, the specimen at rest before the
+	// hammer is near) is stepped as far as its pairs' speed allows (plastic::contactSpeed_m_s)
+	plastic::ContactSubstepPolicy::ContactSpeed contactSpeed;
+	if (p.contact_travel_m > 0)
+	{
+		contactSpeed = [this](double horizon_s) { return this->contactSpeed_m_s(horizon_s); };
+	}
 	m_substeps.advance(
 		frame, [this](double horizon_s) { return nearContact(horizon_s); }, [this](double h_s) { internalStep(h_s); },
-		[this] { return fastestSpin_rad_s(); }, timeToTouch, timeToRelease, ended, gather);
+		[this] { return fastestSpin_rad_s(); }, timeToTouch, timeToRelease, ended, gather, contactSpeed);
 	m_lastFrameStep_s = frame;
 }
 

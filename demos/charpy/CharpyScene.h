@@ -111,6 +111,8 @@ private:
 	bool nearContact(double horizon_s) const;
 	// when the first part now apart from an anvil or the hammer touches it, within horizon_s [s]
 	double timeToTouch_s(double horizon_s) const;
+	// the fastest speed of a part against an anvil or the hammer in or near contact within horizon_s [m/s]
+	double contactSpeed_m_s(double horizon_s) const;
 	double fastestSpin_rad_s() const;  // of the specimen's parts
 	void internalStep(double h_s);
 	void trackAfterStep(double h_s);

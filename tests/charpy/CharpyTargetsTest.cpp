@@ -291,6 +291,22 @@ TEST(CharpyParameters, InvalidValuesAreRejectedNamingTheParameter)
 		EXPECT_NE(text.find("parts:"), std::string::npos) << text;
 		EXPECT_NE(text.find("dt:"), std::string::npos) << text;
 	}
+	// the contact travel: a length in [1e-7, 1] m, or 0; it needs contact substeps
+	for (const double travel_m : {-1e-3, double(NAN), 2.0})
+	{
+		CharpyParameters q;
+		q.contact_travel_m = travel_m;
+		const std::vector<std::string> errors = validateCharpyParameters(q);
+		ASSERT_EQ(errors.size(), 1u) << travel_m;
+		EXPECT_NE(errors[0].find("contact-travel: "), std::string::npos) << errors[0];
+		EXPECT_NE(errors[0].find("is not in [1e-07, 1] m"), std::string::npos) << errors[0];
+	}
+	CharpyParameters q;
+	q.contact_travel_m = 3e-4;
+	q.contact_substep_s = 0;
+	const std::vector<std::string> errors = validateCharpyParameters(q);
+	ASSERT_EQ(errors.size(), 1u);
+	EXPECT_NE(errors[0].find("contact-travel: 0.0003 needs contact substeps"), std::string::npos) << errors[0];
 }
 
 TEST(CharpyTargets, SixtyHertzFramesCostNoMoreInternalStepsThanMillisecondFrames)
