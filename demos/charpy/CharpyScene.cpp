@@ -498,16 +498,26 @@ std::string CharpyScene::speculativeReachWarning() const
 	const double step = p.contact_substep_s > 0 ? p.contact_substep_s : p.dt_s;
 	const double reach = speculativeReach_m();
 	const double closing = m_impactSpeed_m_s * step;
-	if (!(closing > reach))
-	{
-		return "";
-	}
+	std::string warning;
 	char text[320];
-	std::snprintf(text, sizeof text,
-				  "the hammer closes %.3f mm in a %.4g us internal step at %.2f m/s, more than the %.3f mm the speculative "
-				  "contacts reach: parts can sink in and be thrown out; use --contact-substep of at most %.3g",
-				  1e3 * closing, 1e6 * step, m_impactSpeed_m_s, 1e3 * reach, reach / m_impactSpeed_m_s);
-	return text;
+	if (closing > reach)
+	{
+		std::snprintf(text, sizeof text,
+					  "the hammer closes %.3f mm in a %.4g us internal step at %.2f m/s, more than the %.3f mm the speculative "
+					  "contacts reach: parts can sink in and be thrown out; use --contact-substep of at most %.3g",
+					  1e3 * closing, 1e6 * step, m_impactSpeed_m_s, 1e3 * reach, reach / m_impactSpeed_m_s);
+		warning = text;
+	}
+	if (p.contact_travel_m > reach)
+	{
+		// a step the travel lengthens lets its pairs move that far: past the reach, a contact can be missed within it
+		std::snprintf(text, sizeof text,
+					  "a step in contact may let its pairs move the %.3f mm contact travel, more than the %.3f mm the "
+					  "speculative contacts reach; use --contact-travel of at most %.3g",
+					  1e3 * p.contact_travel_m, 1e3 * reach, reach);
+		warning += (warning.empty() ? "" : "; ") + std::string(text);
+	}
+	return warning;
 }
 
 double CharpyScene::fastestSpin_rad_s() const

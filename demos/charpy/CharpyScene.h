@@ -62,8 +62,9 @@ public:
 	double speculativeReach_m() const;
 	// With speculative contacts, a warning when the hammer closes more than their reach in an internal step in
 	// contact (the contact substep, or the frame step without substeps) at its impact speed, naming the largest
-	// substep that does not; empty otherwise. Such steps let parts sink in past the reach, and the contacts'
-	// position correction can throw them out (report/REPORT.md's landscape of substeps).
+	// substep that does not, and when the contact travel is longer than their reach (a step it lengthens lets its
+	// pairs move that far), naming the reach; empty otherwise. Such steps let parts sink in past the reach, and the
+	// contacts' position correction can throw them out (report/REPORT.md's landscape of substeps).
 	std::string speculativeReachWarning() const;
 	double maxEnergyGain_j() const { return m_maxEnergyGain_j; }
 	// The largest excess, after any internal step, of the plastic work booked so far over the energy the scene has

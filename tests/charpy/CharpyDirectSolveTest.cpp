@@ -346,6 +346,18 @@ TEST(CharpyDirectSolve, ARunWhoseStepClosesPastTheSpeculativeReachSaysSoBeforeIt
 	p = coarseSpeculative();
 	p.contact_substep_s = 0;
 	EXPECT_NE("", CharpyScene(p).speculativeReachWarning());
+	// a contact travel longer than the reach (0.31 mm for the halves) is told, with the reach to use
+	p = coarseSpeculative();
+	p.contact_travel_m = 3e-4;
+	EXPECT_EQ("", CharpyScene(p).speculativeReachWarning());
+	p.contact_travel_m = 5e-4;
+	const std::string travel = CharpyScene(p).speculativeReachWarning();
+	EXPECT_NE(std::string::npos, travel.find("the 0.500 mm contact travel")) << travel;
+	EXPECT_NE(std::string::npos, travel.find("--contact-travel of at most 0.000309")) << travel;
+	p.parts = 32;
+	p.contact_substep_s = 2e-5;
+	p.contact_travel_m = 3e-4;
+	EXPECT_NE(std::string::npos, CharpyScene(p).speculativeReachWarning().find("--contact-travel of at most"));
 }
 
 // Patch 0042 (btDispatcherInfo::m_boxBoxEdgesAcrossFaces, the runner's --box-edges-across-faces). Plastic analysis puts
