@@ -41,11 +41,14 @@ LANDSCAPE_DT_MS = 1
 # test takes then no longer grow with the frame rate (0.1 ms frames after the pass were a step each)
 FREE_STEP_S = 5e-3
 FREE_SUBSTEP_S = [3e-5, 6e-5]
+# and those again with slow contacts stepped by their motion (--contact-travel, the speculative contacts' reach for
+# the halves): a piece longer than the substep in which the pairs in or near contact move at most 0.3 mm is one step
+FREE_TRAVEL_M = 3e-4
 # each plastic method's converged run, the reference of the discretisation errors: direct solve, speculative contacts,
 # 2 us contact substeps (the loss moves by 0.1 % between 2 and 1 us; sequential impulse gives the same at 2 us)
 REFERENCE_SUBSTEP_S = 2e-6
-FIRST_COLUMNS = ("key", "method", "dt_ms", "auto_dt", "iterations", "contact_substep_s", "free_step_s", "solver", "contacts",
-                 "reference")
+FIRST_COLUMNS = ("key", "method", "dt_ms", "auto_dt", "iterations", "contact_substep_s", "free_step_s", "contact_travel_m",
+                 "solver", "contacts", "reference")
 
 
 def configurations(quick=False):
@@ -56,7 +59,7 @@ def configurations(quick=False):
     substeps = [1e-5] if quick else CONTACT_SUBSTEP_S
     out = []
 
-    def add(method, it, sub, dt, solver, speculative=False, reference=False, free=0):
+    def add(method, it, sub, dt, solver, speculative=False, reference=False, free=0, travel=0):
         flags = [f"--method={method}", f"--iterations={it}", f"--contact-substep={sub:g}"]
         flags.append("--auto-dt" if dt == "auto" else f"--dt={dt / 1000:.10g}")
         key = f"{method}/dt={dt}/it={it}/sub={sub:g}"
@@ -69,6 +72,9 @@ def configurations(quick=False):
         if free:
             flags.append(f"--free-step={free:g}")
             key += f"/free={free:g}"
+        if travel:
+            flags.append(f"--contact-travel={travel:g}")
+            key += f"/travel={travel:g}"
         if reference:
             key = f"{method}/reference"
         out.append({
@@ -79,6 +85,7 @@ def configurations(quick=False):
             "iterations": str(it),
             "contact_substep_s": f"{sub:g}",
             "free_step_s": f"{free:g}" if free else "",
+            "contact_travel_m": f"{travel:g}" if travel else "",
             "solver": solver,
             "contacts": "speculative" if speculative else "",
             "reference": "1" if reference else "",
@@ -104,6 +111,7 @@ def configurations(quick=False):
         for sub in ([] if quick else FREE_SUBSTEP_S):
             for dt in steps:
                 add(method, 10, sub, dt, "direct", speculative=True, free=FREE_STEP_S)
+                add(method, 10, sub, dt, "direct", speculative=True, free=FREE_STEP_S, travel=FREE_TRAVEL_M)
     return out
 
 
