@@ -211,7 +211,16 @@ class FrictionModelTest(unittest.TestCase):
         frames = ("0.1 ms", "1 ms", "1/60 s")
         self.assertEqual(len(cells), len(frames), line)
         for frame, cell in zip(frames, cells):
-            run = next(r for r in rows if r["geometry"] == "standard" and r["settings"].endswith(f", {frame} frames"))
+            run = next(r for r in rows if r["geometry"] == "standard" and r["settings"].endswith(f"free step 5 ms, {frame} frames"))
+            self.assertEqual(cell.split(" / ")[0], f"{float(run['loss_J']):.2f}", (frame, line))
+            self.assertEqual(cell.split(" / ")[1], run["steps"], (frame, line))
+        # and the table with the contact travel shows the travel's runs
+        table = markdown[markdown.index("### The same with slow contacts stepped by their motion"):]
+        line = next(x for x in table.splitlines() if x.startswith("| standard | 0.10 |"))
+        cells = [c.strip() for c in line.strip("|").split("|")][2:]
+        self.assertEqual(len(cells), len(frames), line)
+        for frame, cell in zip(frames, cells):
+            run = next(r for r in rows if r["geometry"] == "standard" and r["settings"].endswith(f"travel 0.3 mm, {frame} frames"))
             self.assertEqual(cell.split(" / ")[0], f"{float(run['loss_J']):.2f}", (frame, line))
             self.assertEqual(cell.split(" / ")[1], run["steps"], (frame, line))
         for r in rows:
