@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h"
@@ -504,6 +505,19 @@ double timeToRelease_s(btDispatcher& dispatcher, const std::vector<const btColli
 	return first;
 }
 
+namespace
+{
+// relativeSpeedBound_m_s grown by what the accelerations mayTouchWithin takes (the pair's gravity difference, the
+// other's turning frame, a body a hinge holds to a fixed one) add within the horizon
+double speedWithin_m_s(const btCollisionObject* mover, const btCollisionObject* other, double horizon_s)
+{
+	const Motion motion = relativeMotion(mover, other);
+	const double acceleration_m_s2 = relativeGravity_m_s2(mover, other) + motion.frameAcceleration_m_s2 +
+									 heldAcceleration_m_s2(mover) + heldAcceleration_m_s2(other);
+	return double(motion.velocity.length()) + motion.spinSpeed_m_s + acceleration_m_s2 * horizon_s;
+}
+}  // namespace
+
 double contactSpeed_m_s(btDispatcher& dispatcher, const std::vector<const btCollisionObject*>& movers,
 						const std::vector<const btCollisionObject*>& others, double horizon_s, double clearance_m,
 						double speculativeReach_m)
@@ -517,7 +531,12 @@ double contactSpeed_m_s(btDispatcher& dispatcher, const std::vector<const btColl
 		{
 			const btCollisionObject* mover = moverIsBody0 ? manifold->getBody0() : manifold->getBody1();
 			const btCollisionObject* other = moverIsBody0 ? manifold->getBody1() : manifold->getBody0();
-			fastest = std::max(fastest, relativeSpeedBound_m_s(mover, other));
+			const double speed = speedWithin_m_s(mover, other, horizon_s);
+			if (!std::isfinite(speed))
+			{
+				return std::numeric_limits<double>::infinity();
+			}
+			fastest = std::max(fastest, speed);
 		}
 	}
 	std::vector<const btCollisionObject*> mover(1), other(1);
@@ -529,7 +548,11 @@ double contactSpeed_m_s(btDispatcher& dispatcher, const std::vector<const btColl
 			{
 				continue;
 			}
-			const double speed = relativeSpeedBound_m_s(m, o);
+			const double speed = speedWithin_m_s(m, o, horizon_s);
+			if (!std::isfinite(speed))
+			{
+				return std::numeric_limits<double>::infinity();
+			}
 			if (speed <= fastest)
 			{
 				continue;
@@ -679,19 +702,36 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 					}
 				}
 			}
+			if (travelling)
+			{
+				// such a step ends on a tick of the contacts' clock (the next one, and whole substeps after it), so
+				// that the ticks keep their phase and a contact met after it falls where it would in substeps, whatever
+				// the frame step; a piece that holds no whole substep after the next tick is left to the substeps
+				const double toTick = m_phase_s > 1e-6 * h && h - m_phase_s > 1e-6 * h ? h - m_phase_s : 0;
+				const double whole = std::floor((piece - toTick) / h * (1 + 1e-9));
+				if (whole >= 1)
+				{
+					piece = toTick + whole * h;
+				}
+				else
+				{
+					travelling = false;
+					piece = std::min(h, remaining);
+				}
+			}
 			const bool inContact = !travelling && (piece < remaining ? piece <= h : (remaining <= h && nearContact(remaining)));
 			if (travelling)
 			{
 				steppedInContact = true;
 				// as a substep, a step that a release falls within ends there (at least a quarter of a substep in);
 				// the ticks count from its end
-				touching = true;
 				if (timeToRelease)
 				{
 					const double release = timeToRelease(piece);
 					if (release >= h / 4 && release < piece)
 					{
 						piece = release;
+						touching = true;
 					}
 				}
 				m_splitForRelease = false;

@@ -76,12 +76,13 @@ double timeToTouch_s(const std::vector<const btCollisionObject*>& movers, const 
 double timeToRelease_s(btDispatcher& dispatcher, const std::vector<const btCollisionObject*>& movers,
 					   const std::vector<const btCollisionObject*>& others, double horizon_s);
 
-// The fastest speed [m/s], by relativeSpeedBound_m_s, of a body of `movers` against an object of `others` among the
-// pairs in or near contact: pairs whose manifold (as the dispatcher holds them) has a point, and pairs that
-// mayTouchWithin horizon_s (with the same clearance and speculative reach); 0 when there is none. A contact step in
-// which no such pair moves more than a distance d against the other is at most d over this speed long: what a contact
-// sees in a step (the turn of its normal, the slide of its points, the gap it closes) is bounded by that distance,
-// whatever the step.
+// The fastest speed [m/s] of a body of `movers` against an object of `others` within horizon_s among the pairs in or
+// near contact: pairs whose manifold (as the dispatcher holds them) has a point, and pairs that mayTouchWithin
+// horizon_s (with the same clearance and speculative reach); 0 when there is none, +inf when a speed is not finite.
+// A pair's speed is relativeSpeedBound_m_s grown by the accelerations mayTouchWithin takes (their gravity difference,
+// the other's turning frame, a hinge to a fixed body) times horizon_s. What contact and joint forces add within the
+// horizon is not in it, as mayTouchWithin leaves it to its clearance: a step of d over this speed moves such a pair
+// about d, not at most d (a scene keeps the substep where such forces work: CharpyScene, while a joint flows).
 double contactSpeed_m_s(btDispatcher& dispatcher, const std::vector<const btCollisionObject*>& movers,
 						const std::vector<const btCollisionObject*>& others, double horizon_s, double clearance_m = 0.001,
 						double speculativeReach_m = 0);
@@ -108,8 +109,8 @@ struct ContactSubstepSettings
 	// in or near contact, a piece longer than the substep within which the pairs in or near contact move at most this
 	// far against each other (given `contactSpeed`: their fastest speed times the piece) is one step [m]: a slow
 	// contact (a hammer stalled in a specimen, a specimen at rest on its supports) is stepped as far as its motion
-	// allows, not at the substep. Set to the speculative contacts' reach, no such step closes more than the contacts
-	// hold. 0 = every step in or near contact is the substep
+	// allows, not at the substep. At most the speculative contacts' reach, such a step closes no more than the contacts
+	// hold (as far as the speed bound holds). 0 = every step in or near contact is the substep
 	double contact_travel_m = 0;
 };
 
@@ -156,9 +157,10 @@ public:
 	// pass it until it first holds (CharpyScene does), not after. With `gather` false the frame and what is
 	// owed are stepped whatever the free step (a run's last frame: the world reaches its end, not past it later).
 	// With contact_travel_m and `contactSpeed`, a piece longer than a substep that is near contact is one step when the
-	// pairs move at most contact_travel_m in it (the halving stops there); such a step ends at a touch or a release
-	// within it as a substep does (at least half, or a quarter, of a substep in), and the clock's ticks count from its
-	// end.
+	// pairs move at most contact_travel_m in it (the halving stops there); such a step ends two substeps before a
+	// touch predicted within it or the two substeps after it (one nearer than three substeps is met by substeps, not
+	// by such a step), and at a release within it (at least a quarter of a substep in), and the clock's ticks count
+	// from its end: the steps then depend on the frame step, as steps out of contact do.
 	int advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin = Spin(),
 				const TimeToTouch& timeToTouch = TimeToTouch(), const TimeToRelease& timeToRelease = TimeToRelease(),
 				const Done& done = Done(), bool gather = true, const ContactSpeed& contactSpeed = ContactSpeed());

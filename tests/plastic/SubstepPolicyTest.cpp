@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -348,7 +349,7 @@ TEST(SubstepPolicy, AContactIsPressedWhileItCarriesAnImpulse)
 TEST(SubstepPolicy, TheContactSpeedIsTheFastestPairInOrNearContact)
 {
 	// a ball resting on a static floor, rolled along it at 0.2 m/s (spin 2 rad/s; its reach is its box's corner,
-	// 0.1 sqrt(3) m), and a second ball
+	// 0.1 sqrt(3) m; its gravity, the world's 10 m/s^2, adds 10 m/s^2 times the horizon), and a second ball
 	// 10 mm from a static wall closing on it at 10 m/s: within 0.5 ms only the rolling ball is in contact (its floor
 	// manifold), 0.2 m/s plus 2 rad/s x 0.173 m; within 2 ms the second ball can touch the wall too: 10 m/s (the floor
 	// and its ball 10 m from the wall and its ball)
@@ -376,13 +377,16 @@ TEST(SubstepPolicy, TheContactSpeedIsTheFastestPairInOrNearContact)
 	BallAndWall s(0.01, 10.0);
 	const std::vector<const btCollisionObject*> movers{&ball, s.ball.get()}, others{&floor, s.wall.get()};
 	const double rolling = 0.2 + 2 * 0.1 * std::sqrt(3.0);
-	EXPECT_NEAR(plastic::contactSpeed_m_s(dispatcher, movers, others, 5e-4, 0.0), rolling, 1e-4);
+	EXPECT_NEAR(plastic::contactSpeed_m_s(dispatcher, movers, others, 5e-4, 0.0), rolling + 10 * 5e-4, 1e-4);
 	EXPECT_NEAR(plastic::contactSpeed_m_s(dispatcher, movers, others, 2e-3, 0.0), 10.0, 1e-4);
 	// moving away from the wall it is no pair near contact, however fast
 	s.ball->setLinearVelocity(btVector3(-10, 0, 0));
-	EXPECT_NEAR(plastic::contactSpeed_m_s(dispatcher, movers, others, 2e-3, 0.0), rolling, 1e-4);
+	EXPECT_NEAR(plastic::contactSpeed_m_s(dispatcher, movers, others, 2e-3, 0.0), rolling + 10 * 2e-3, 1e-4);
 	// nothing in or near contact
 	EXPECT_EQ(plastic::contactSpeed_m_s(dispatcher, {s.ball.get()}, {s.wall.get()}, 2e-3, 0.0), 0.0);
+	// a speed that is not finite is no bound
+	s.ball->setLinearVelocity(btVector3(btScalar(NAN), 0, 0));
+	EXPECT_EQ(plastic::contactSpeed_m_s(dispatcher, movers, others, 2e-3, 0.0), std::numeric_limits<double>::infinity());
 	world.removeRigidBody(&ball);
 	world.removeRigidBody(&floor);
 }
@@ -973,15 +977,16 @@ TEST(SubstepPolicy, FarFromContactNoStepTurnsABodyMoreThanTheBound)
 TEST(SubstepPolicy, AContactSlowerThanTheTravelIsSteppedAsFarAsItsSpeedAllows)
 {
 	// in contact all along (a specimen at rest on its supports, a hammer stalled in it), 1 ms substeps, a travel of
-	// 1 mm: what is left of a 10 ms frame is cut in halves only until its pairs move at most 1 mm in a piece (at
-	// 0.3 m/s: 10 -> 5 -> 2.5 ms, then 7.5 -> 3.75 -> 1.875 ms, then 5.625 -> 2.8125 ms), and no further than a
-	// substep; without the travel, or without the pairs' speed, it is ten substeps
+	// 1 mm: what is left of a 10 ms frame is cut in halves only until its pairs move at most 1 mm in a piece, and no
+	// further than a substep, and the piece ends on a tick of the substeps' clock (at 0.3 m/s: 10 -> 5 -> 2.5 ms, a
+	// step of 2 ms; then 8 -> 4 -> 2 ms; then 6 -> 3 ms, twice); without the travel, or without the pairs' speed, it
+	// is ten substeps
 	const auto touching = [](double) { return true; };
 	const struct
 	{
 		double speed_m_s;
 		std::vector<double> steps_s;
-	} cases[] = {{0.05, {10e-3}}, {0.3, {2.5e-3, 1.875e-3, 2.8125e-3, 2.8125e-3}}, {2.0, std::vector<double>(10, 1e-3)}};
+	} cases[] = {{0.05, {10e-3}}, {0.3, {2e-3, 2e-3, 3e-3, 3e-3}}, {2.0, std::vector<double>(10, 1e-3)}};
 	for (const auto& c : cases)
 	{
 		plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{1e-3, 0.25, 0, 1e-3});
@@ -1023,9 +1028,9 @@ TEST(SubstepPolicy, AContactSlowerThanTheTravelIsSteppedAsFarAsItsSpeedAllows)
 TEST(SubstepPolicy, ATravelStepEndsTwoSubstepsBeforeATouchWhichSubstepsMeet)
 {
 	// the ball closes on the wall at 10 m/s, 55 mm away (5.5 ms); the pairs in contact are slow (0.05 m/s), so the
-	// 10 ms frame could be one step: it ends two substeps before the touch (3.5 ms), and the touch is met by substeps
-	// (the last of them steps to the touch, in one step or two equal ones), not by a step predicted from the end of a
-	// long one
+	// 10 ms frame could be one step: it ends two substeps before the touch, on the clock's last tick before that (3
+	// ms), and the touch is met by substeps (the last of them steps to the touch, in one step or two equal ones), not
+	// by a step predicted from the end of a long one
 	BallAndWall s(55e-3, 10.0);
 	plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{1e-3, 0.25, 0, 1e-3});
 	std::vector<double> steps;
@@ -1034,7 +1039,7 @@ TEST(SubstepPolicy, ATravelStepEndsTwoSubstepsBeforeATouchWhichSubstepsMeet)
 		10e-3, [](double) { return true; }, [&](double h) { steps.push_back(h); s.move(h); }, {}, timeToTouch, {}, {}, true,
 		[](double) { return 0.05; });
 	ASSERT_GE(steps.size(), 3u);
-	EXPECT_NEAR(steps[0], 3.5e-3, 1e-9);
+	EXPECT_NEAR(steps[0], 3e-3, 1e-9);
 	EXPECT_NEAR(steps[1], 1e-3, 1e-9);
 	double t = steps[0] + steps[1];
 	size_t i = 2;
@@ -1045,6 +1050,33 @@ TEST(SubstepPolicy, ATravelStepEndsTwoSubstepsBeforeATouchWhichSubstepsMeet)
 	}
 	EXPECT_NEAR(t, 5.5e-3, 1e-6);  // a step ends at the touch
 	EXPECT_LE(i, 4u);
+}
+
+TEST(SubstepPolicy, ATravelStepKeepsTheClocksTicksAndEndsAtARelease)
+{
+	// a frame of 0.4 ms far from contact leaves the clock 0.4 ms past a tick; a slow contact's 10 ms frame is then one
+	// step to a tick (9.6 ms) and the rest, 0.4 ms, is owed, as in substeps
+	plastic::ContactSubstepPolicy policy(plastic::ContactSubstepSettings{1e-3, 0.25, 0, 1e-3});
+	std::vector<double> steps;
+	const auto step = [&](double h) { steps.push_back(h); };
+	const auto slow = [](double) { return 0.05; };
+	policy.advance(
+		0.4e-3, [](double) { return false; }, step, {}, {}, {}, {}, true, slow);
+	ASSERT_EQ(steps.size(), 1u);
+	policy.advance(
+		10e-3, [](double) { return true; }, step, {}, {}, {}, {}, true, slow);
+	ASSERT_EQ(steps.size(), 2u);
+	EXPECT_NEAR(steps[1], 9.6e-3, 1e-12);
+	EXPECT_NEAR(policy.owed_s(), 0.4e-3, 1e-12);
+	// a pressed contact that ends 4.5 ms in ends the step there
+	plastic::ContactSubstepPolicy released(plastic::ContactSubstepSettings{1e-3, 0.25, 0, 1e-3});
+	steps.clear();
+	double t = 0;
+	released.advance(
+		10e-3, [](double) { return true; }, [&](double h) { steps.push_back(h); t += h; }, {}, {},
+		[&](double horizon_s) { return std::min(horizon_s, std::max(0.0, 4.5e-3 - t)); }, {}, true, slow);
+	ASSERT_GE(steps.size(), 2u);
+	EXPECT_NEAR(steps[0], 4.5e-3, 1e-12);
 }
 
 TEST(SubstepPolicy, ASlowContactsFramesAreGatheredAsFramesOutOfContactAre)
