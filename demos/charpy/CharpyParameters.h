@@ -60,7 +60,8 @@ struct CharpyParameters
 	double contact_travel_m = 0;         // in or near contact, a step longer than the substep is taken where the
 	                                     // pairs in or near contact move at most this far against each other in it
 	                                     // (ContactSubstepSettings::contact_travel_m; a stalled hammer, a specimen at
-	                                     // rest); 0 = every such step is the substep
+	                                     // rest); 0 = every such step is the substep. Needs speculative contacts
+	                                     // and the direct solve
 	int solver_iterations = 10;
 	// the constraint solver: upstream's sequential impulse (the thesis' runs), or btDirectJointSolver (patch 0019),
 	// which solves the specimen's joints and contacts together and keeps it whole at internal steps of 0.1 to 1 ms,

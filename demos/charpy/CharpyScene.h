@@ -138,6 +138,7 @@ private:
 	// an anvil; true before the first step, when no contact has told its load (the specimen lying on the anvils made
 	// 0.07-0.15 J in a first step of 0.5 ms)
 	bool m_holdSubstep = true;
+	bool m_jointFlowed = true;  // a joint flowed in the last internal step (with speculative contacts)
 	double m_jointRotation_rad = 0;  // the joints' plastic rotation after the last step
 	long m_internalSteps = 0;
 	double m_lastFrameStep_s = 0;

@@ -291,10 +291,13 @@ TEST(CharpyParameters, InvalidValuesAreRejectedNamingTheParameter)
 		EXPECT_NE(text.find("parts:"), std::string::npos) << text;
 		EXPECT_NE(text.find("dt:"), std::string::npos) << text;
 	}
-	// the contact travel: a length in [1e-7, 1] m, or 0; it needs contact substeps
+	// the contact travel: a length in [1e-7, 1] m, or 0; it needs contact substeps, speculative contacts and the
+	// direct solve
 	for (const double travel_m : {-1e-3, double(NAN), 2.0})
 	{
 		CharpyParameters q;
+		q.solver = plastic::SolverKind::DirectJoint;
+		q.speculative_contacts = true;
 		q.contact_travel_m = travel_m;
 		const std::vector<std::string> errors = validateCharpyParameters(q);
 		ASSERT_EQ(errors.size(), 1u) << travel_m;
@@ -302,11 +305,24 @@ TEST(CharpyParameters, InvalidValuesAreRejectedNamingTheParameter)
 		EXPECT_NE(errors[0].find("is not in [1e-07, 1] m"), std::string::npos) << errors[0];
 	}
 	CharpyParameters q;
+	q.solver = plastic::SolverKind::DirectJoint;
+	q.speculative_contacts = true;
 	q.contact_travel_m = 3e-4;
+	EXPECT_TRUE(validateCharpyParameters(q).empty());
 	q.contact_substep_s = 0;
-	const std::vector<std::string> errors = validateCharpyParameters(q);
+	std::vector<std::string> errors = validateCharpyParameters(q);
 	ASSERT_EQ(errors.size(), 1u);
 	EXPECT_NE(errors[0].find("contact-travel: 0.0003 needs contact substeps"), std::string::npos) << errors[0];
+	for (const bool direct : {false, true})
+	{
+		q = CharpyParameters();
+		q.contact_travel_m = 3e-4;
+		q.solver = direct ? plastic::SolverKind::DirectJoint : plastic::SolverKind::SequentialImpulse;
+		q.speculative_contacts = !direct;
+		errors = validateCharpyParameters(q);
+		ASSERT_EQ(errors.size(), 1u) << direct;
+		EXPECT_NE(errors[0].find("contact-travel: 0.0003 needs --speculative-contacts and --solver=direct"), std::string::npos) << errors[0];
+	}
 }
 
 TEST(CharpyTargets, SixtyHertzFramesCostNoMoreInternalStepsThanMillisecondFrames)
