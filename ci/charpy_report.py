@@ -479,8 +479,8 @@ by less than the free step, as upstream's fixed-step `stepSimulation` lags its f
 steps of a test no longer grow with the frame rate. In contact nothing changes. Same cells as above, against the
 converged runs. The tables with a contact travel (`--contact-travel=3e-4`, `ContactSubstepSettings::contact_travel_m`)
 take a piece longer than the substep as one step where the pairs in or near contact move at most 0.3 mm in it (the
-speculative contacts' reach for the halves), and gather a slow contact's frames too; a step so lengthened ends two
-substeps before a predicted touch.
+speculative contacts' reach for the halves), and gather a slow contact's frames too; a step so lengthened ends on a
+tick of the substeps' clock, two substeps or more before a predicted touch, and none is taken while a joint flows.
 
 """ + "\n".join(gathered_sections)) + f"""
 ## The thesis' Table 3.1 beside ours (elastic-plastic2, 10 iterations, contact substep 0.01 ms)
