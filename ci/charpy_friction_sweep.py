@@ -125,6 +125,19 @@ def markdown(rows, command):
 
     def dev(r):
         return "-" if r["deviation_pct"] is None else f"{r['deviation_pct']:+.1f} %"
+
+    def frame_table(selected, frames, travel):
+        """per striker and mu, a cell per frame step: loss / internal steps / against the model"""
+        table = ["| striker | mu | " + " | ".join(f"{f} frames" for f in frames) + " |", "|---|---|" + "---|" * len(frames)]
+        for geometry in [g for g in GEOMETRIES if any(r["geometry"] == g for r in selected)]:
+            for mu in sorted({r["mu"] for r in selected if r["geometry"] == geometry}):
+                cells = []
+                for f in frames:
+                    name = gathered_name(f, travel=travel)
+                    r = next((x for x in selected if x["geometry"] == geometry and x["mu"] == mu and x["settings"] == name), None)
+                    cells.append("-" if r is None else f"{fmt(r['loss_J'])} / {r['steps']} / {dev(r)}" + ("" if r["passed"] else f" ({passed(r)})"))
+                table.append(f"| {geometry} | {mu:.2f} | " + " | ".join(cells) + " |")
+        return table
     for r in rows:
         if r["settings"] == "default":
             lines.append(f"| {r['geometry']} | {r['mu']:.2f} | {fmt(r['loss_J'])} | {fmt(r['plastic_J'])} | {passed(r)} | "
@@ -200,16 +213,7 @@ def markdown(rows, command):
             f"{within3(gathered)} runs within 3 % of the model, {within100(gathered)} within 100 internal steps. Friction 0",
             "goes over the top, and friction 0.30, past the issue's 0-0.25, ends below the model, as the default runs do (above).",
             "",
-            "| striker | mu | " + " | ".join(f"{f} frames" for f in frames) + " |",
-            "|---|---|" + "---|" * len(frames),
-        ]
-        for geometry in [g for g in GEOMETRIES if any(r["geometry"] == g for r in gathered)]:
-            for mu in sorted({r["mu"] for r in gathered if r["geometry"] == geometry}):
-                cells = []
-                for f in frames:
-                    r = next((x for x in gathered if x["geometry"] == geometry and x["mu"] == mu and x["settings"] == gathered_name(f)), None)
-                    cells.append("-" if r is None else f"{fmt(r['loss_J'])} / {r['steps']} / {dev(r)}" + ("" if r["passed"] else f" ({passed(r)})"))
-                lines.append(f"| {geometry} | {mu:.2f} | " + " | ".join(cells) + " |")
+        ] + frame_table(gathered, frames, travel=False)
     if travelled:
         frames = [f for f in FRAME_STEPS_MS if any(r["settings"] == gathered_name(f, travel=True) for r in travelled)]
         steps = [r["steps"] for r in travelled]
@@ -226,16 +230,7 @@ def markdown(rows, command):
             f"within 100 internal steps; all runs {min(steps)}-{max(steps)} steps (without the travel, above:",
             f"{min(r['steps'] for r in gathered)}-{max(r['steps'] for r in gathered)}).",
             "",
-            "| striker | mu | " + " | ".join(f"{f} frames" for f in frames) + " |",
-            "|---|---|" + "---|" * len(frames),
-        ]
-        for geometry in [g for g in GEOMETRIES if any(r["geometry"] == g for r in travelled)]:
-            for mu in sorted({r["mu"] for r in travelled if r["geometry"] == geometry}):
-                cells = []
-                for f in frames:
-                    r = next((x for x in travelled if x["geometry"] == geometry and x["mu"] == mu and x["settings"] == gathered_name(f, travel=True)), None)
-                    cells.append("-" if r is None else f"{fmt(r['loss_J'])} / {r['steps']} / {dev(r)}" + ("" if r["passed"] else f" ({passed(r)})"))
-                lines.append(f"| {geometry} | {mu:.2f} | " + " | ".join(cells) + " |")
+        ] + frame_table(travelled, frames, travel=True)
     return "\n".join(lines) + "\n"
 
 
