@@ -627,6 +627,12 @@ std::vector<std::string> validate(const ContactSubstepSettings& settings)
 
 ContactSubstepPolicy::ContactSubstepPolicy(const ContactSubstepSettings& settings) : m_settings(settings), m_errors(validate(settings)) {}
 
+double ContactSubstepPolicy::toNextTick_s() const
+{
+	const double h = m_settings.contact_substep_s;
+	return m_phase_s > 1e-6 * h && h - m_phase_s > 1e-6 * h ? h - m_phase_s : 0;
+}
+
 int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact, const Step& step, const Spin& spin,
 								  const TimeToTouch& timeToTouch, const TimeToRelease& timeToRelease, const Done& done,
 								  bool gather, const ContactSpeed& contactSpeed)
@@ -636,6 +642,10 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 		return -1;
 	}
 	const double h = m_settings.contact_substep_s;
+	// with contact_travel_m and contactSpeed: whether the pairs in or near contact move no more than the travel within
+	// a time
+	const auto slowWithin = [&](double time_s)
+	{ return m_settings.contact_travel_m > 0 && contactSpeed && contactSpeed(time_s) * time_s <= m_settings.contact_travel_m; };
 	int steps = 0;
 	double remaining = frame_s + m_owed_s;
 	m_owed_s = 0;
@@ -658,8 +668,7 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 			}
 			// (with contact_travel_m, a contact whose pairs move no more than that within the horizon is gathered
 			// too: a hammer stalled in a specimen)
-			if (!nearContact(horizon) ||
-				(m_settings.contact_travel_m > 0 && contactSpeed && contactSpeed(horizon) * horizon <= m_settings.contact_travel_m))
+			if (!nearContact(horizon) || slowWithin(horizon))
 			{
 				m_owed_s = remaining;
 				break;
@@ -674,7 +683,7 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 			bool travelling = false;
 			while (piece > h && nearContact(piece))
 			{
-				if (m_settings.contact_travel_m > 0 && contactSpeed && contactSpeed(piece) * piece <= m_settings.contact_travel_m)
+				if (slowWithin(piece))
 				{
 					travelling = true;
 					break;
@@ -707,7 +716,7 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 				// such a step ends on a tick of the contacts' clock (the next one, and whole substeps after it), so
 				// that the ticks keep their phase and a contact met after it falls where it would in substeps, whatever
 				// the frame step; a piece that holds no whole substep after the next tick is left to the substeps
-				const double toTick = m_phase_s > 1e-6 * h && h - m_phase_s > 1e-6 * h ? h - m_phase_s : 0;
+				const double toTick = toNextTick_s();
 				const double whole = std::floor((piece - toTick) / h * (1 + 1e-9));
 				if (whole >= 1)
 				{
@@ -748,7 +757,7 @@ int ContactSubstepPolicy::advance(double frame_s, const NearContact& nearContact
 				// the frame step does not move the phase of an impact within the substeps. Those are one step, or two
 				// equal ones where one would be shorter than half a substep: a step of a few microseconds after a long
 				// one gave a Charpy specimen's contacts the impulses of the long one (423 J made on a 365 J test).
-				const double toTick = m_phase_s > 1e-6 * h && h - m_phase_s > 1e-6 * h ? h - m_phase_s : 0;
+				const double toTick = toNextTick_s();
 				const double whole = std::round(remaining / h);
 				if (toTick > 0)
 				{

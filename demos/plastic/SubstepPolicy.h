@@ -173,6 +173,9 @@ public:
 	const std::vector<std::string>& errors() const { return m_errors; }
 
 private:
+	// the time to the contacts' clock's next tick, 0 on a tick [s]
+	double toNextTick_s() const;
+
 	ContactSubstepSettings m_settings;
 	std::vector<std::string> m_errors;
 	double m_owed_s = 0;
