@@ -183,11 +183,57 @@ TEST(SubstepPolicy, ABodySlidingPastAnotherClosesOnlyAlongTheNormal)
 	EXPECT_FALSE(s.near(0.056));
 	EXPECT_TRUE(s.near(0.059));
 	// sliding straight and spinning at 10 rad/s: its points (0.1 sqrt 3 from its centre at its box's corner) close at
-	// up to 1.732 m/s, 10 mm in 5.77 ms
+	// up to 1.732 m/s, 10 mm in 5.77 ms over the whole horizon. Along its path the horizon is taken in eighths, each with
+	// its own spin bound, 1.732 m/s h / 8, from where the motion puts the ball, and the distance from that prediction
+	// grows as 1/2 w^2 |r| t^2: the last eighth, at t = 7h/8, reaches 10 mm after 25.8 ms
 	s.ball->setLinearVelocity(btVector3(0, 10, 0));
 	s.ball->setAngularVelocity(btVector3(0, 0, 10));
-	EXPECT_FALSE(s.near(0.0056));
-	EXPECT_TRUE(s.near(0.0059));
+	EXPECT_FALSE(s.near(0.0059));
+	EXPECT_FALSE(s.near(0.025));
+	EXPECT_TRUE(s.near(0.0266));
+}
+
+TEST(SubstepPolicy, APairThatPassesByIsFollowedAlongItsPath)
+{
+	// a ball of 5 mm radius at 5 m/s along y passing a static 2 mm ball, 20 mm before it and 8 mm to its side: it
+	// passes 1 mm away after 4 ms. Its closing speed now, 4.64 m/s along the line between them, closes their 14.5 mm
+	// within 3.13 ms; along its path (the horizon in eighths, each from where its velocity puts it) it does not.
+	btSphereShape noseShape(btScalar(0.002)), ballShape(btScalar(0.005));
+	btCollisionObject nose;
+	nose.setCollisionShape(&noseShape);
+	btTransform t;
+	t.setIdentity();
+	nose.setWorldTransform(t);
+	nose.setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
+	auto ballAt = [&](double side_m)
+	{
+		auto ball = std::make_unique<btRigidBody>(btScalar(1), nullptr, &ballShape, btVector3(1, 1, 1));
+		btTransform b;
+		b.setIdentity();
+		b.setOrigin(btVector3(btScalar(side_m), btScalar(-0.02), 0));
+		ball->setWorldTransform(b);
+		ball->setLinearVelocity(btVector3(0, 5, 0));
+		return ball;
+	};
+	const double reach = 3e-4;
+	auto near = [&](const btRigidBody& ball, double horizon_s) { return plastic::mayTouchWithin({&ball}, {&nose}, horizon_s, 0.0, reach); };
+	auto passing = ballAt(0.008);
+	EXPECT_FALSE(near(*passing, 3.2e-3));
+	EXPECT_FALSE(near(*passing, 4.5e-3));
+	// 6 mm to the side it touches after 3.28 ms, which it must count
+	auto hitting = ballAt(0.006);
+	EXPECT_FALSE(near(*hitting, 2.5e-3));
+	EXPECT_TRUE(near(*hitting, 3.3e-3));
+	EXPECT_TRUE(near(*hitting, 4.5e-3));
+	// and a pair within the speculative reach counts by its motion over the whole horizon, as without the path: the
+	// ball 0.2 mm from the nose's side closes at 0.2 m/s, 0.15 mm (half the reach) in 0.75 ms
+	auto grazing = ballAt(0.0072);
+	btTransform g = grazing->getWorldTransform();
+	g.setOrigin(btVector3(btScalar(0.0072), 0, 0));
+	grazing->setWorldTransform(g);
+	grazing->setLinearVelocity(btVector3(btScalar(-0.2), 5, 0));
+	EXPECT_FALSE(near(*grazing, 0.7e-3));
+	EXPECT_TRUE(near(*grazing, 0.8e-3));
 }
 
 TEST(SubstepPolicy, APairWithinTheSpeculativeReachCountsOnlyIfItCanMoveHalfTheReach)
