@@ -48,6 +48,12 @@ double relativeGravity_m_s2(const btCollisionObject* mover, const btCollisionObj
 // its contact, or spinning flat on a face, moves its far corners along or away from the other, where the spin's bound
 // at the farthest corner counted them as closing. Where the bodies turn a quarter revolution or more within the
 // horizon the spin's bound is kept.
+// A pair of convex pieces that these bounds count as near over the whole horizon, and that is not within the
+// speculative reach, is tested again along its path: the horizon in eight equal parts, the mover put where its
+// velocity and spin in the other's frame take it by the start of each and tested over that part alone (whether it can
+// touch), with clearance_m grown by how far its points can be from that prediction by then (the accelerations and the
+// turn's second order, as above). A body passing another a millimetre away no longer counts because its closing speed
+// now would close the gap within the horizon.
 bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const std::vector<const btCollisionObject*>& others,
 					double horizon_s, double clearance_m = 0.001, double speculativeReach_m = 0);
 
