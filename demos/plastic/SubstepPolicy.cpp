@@ -161,7 +161,7 @@ btPointCollector closestPoints(const Piece& mover, const Piece& other)
 // vertices are taken one by one against the plane that separates the other (boxVerticesNear); another mover's pair
 // within their reach counts only if it can move more than half the reach against the other within the horizon. A pair
 // that touches or overlaps is left to its contacts as well (whether they carry load is pressedContact's to tell).
-bool within(const Piece& mover, const Piece& other, const Reach& reach)
+bool within(const Piece& mover, const Piece& other, const Reach& reach, btScalar* gjkDistance = nullptr)
 {
 	const btScalar grow = reach.grow;
 	if (!overlap(mover.lo, mover.hi, other.lo, other.hi))
@@ -173,6 +173,10 @@ bool within(const Piece& mover, const Piece& other, const Reach& reach)
 		return true;
 	}
 	const btPointCollector closest = closestPoints(mover, other);
+	if (gjkDistance)
+	{
+		*gjkDistance = closest.m_hasResult ? closest.m_distance : btScalar(0);
+	}
 	// without a penetration solver an overlap gives no result (and so would a distance past the input's default
 	// m_maximumDistanceSquared, 1e18 m^2)
 	if (!closest.m_hasResult)
@@ -211,8 +215,9 @@ bool within(const Piece& mover, const Piece& other, const Reach& reach)
 // (the accelerations and the turn's second order, as boxVerticesNear bounds them; r the farthest point from the
 // centre). A bound over the whole horizon takes each point's closing speed at the start for all of it: a half flying
 // past the hammer's nose spinning at 100 rad/s has corners whose tangent lines cross the nose's tangent plane within
-// 0.2 ms, and passes it half a millimetre away.
-bool withinAlongPath(const Piece& mover, const Piece& other, const Reach& reach)
+// 0.2 ms, and passes it half a millimetre away. gjkDistance: the distance within() found between them now (0 for an
+// overlap).
+bool withinAlongPath(const Piece& mover, const Piece& other, const Reach& reach, btScalar gjkDistance)
 {
 	const int kPathParts = 8;
 	const Motion& motion = reach.motion;
@@ -222,15 +227,11 @@ bool withinAlongPath(const Piece& mover, const Piece& other, const Reach& reach)
 	const btScalar spin = motion.spin.length();
 	const btScalar farthest = spin > 0 ? btScalar(motion.spinSpeed_m_s) / spin : btScalar(0);
 	const btScalar curvature = motion.spin.length2() + motion.spin.cross(motion.otherSpin).length();
-	if (reach.speculativeReach > 0)
+	if (reach.speculativeReach > 0 && gjkDistance <= reach.speculativeReach)
 	{
 		// a pair within the speculative reach counts by how far it moves against the other over the whole horizon
 		// (within): the parts would each move less
-		const btPointCollector closest = closestPoints(mover, other);
-		if (!closest.m_hasResult || closest.m_distance <= reach.speculativeReach)
-		{
-			return true;
-		}
+		return true;
 	}
 	for (int k = 0; k < kPathParts; k++)
 	{
@@ -347,6 +348,14 @@ Motion relativeMotion(const btCollisionObject* mover, const btCollisionObject* o
 	return motion;
 }
 
+// How far the pair's relative acceleration can be from none [m/s^2]: their gravity difference, the other's turning
+// frame at the mover's centre (motion, relativeMotion's), and a hinge that holds either to a body that does not move
+// (otherHeld_m_s2: heldAcceleration_m_s2(other), which a caller asking for many movers takes once)
+double pairAcceleration_m_s2(const btCollisionObject* mover, const btCollisionObject* other, const Motion& motion, double otherHeld_m_s2)
+{
+	return relativeGravity_m_s2(mover, other) + motion.frameAcceleration_m_s2 + heldAcceleration_m_s2(mover) + otherHeld_m_s2;
+}
+
 // Whether the manifold lies between a body of `movers` and an object of `others`; moverIsBody0 says which of its
 // bodies is the mover
 bool betweenSets(const btPersistentManifold& manifold, const std::vector<const btCollisionObject*>& movers,
@@ -449,8 +458,7 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 			}
 			Reach reach;
 			reach.motion = relativeMotion(mover, other);
-			const double acceleration_m_s2 =
-				relativeGravity_m_s2(mover, other) + reach.motion.frameAcceleration_m_s2 + heldAcceleration_m_s2(mover) + otherHeld_m_s2;
+			const double acceleration_m_s2 = pairAcceleration_m_s2(mover, other, reach.motion, otherHeld_m_s2);
 			const double fixed_m = reach.motion.spinSpeed_m_s * horizon_s + 0.5 * acceleration_m_s2 * horizon_s * horizon_s + clearance_m;
 			reach.grow = btScalar(double(reach.motion.velocity.length()) * horizon_s + fixed_m);
 			reach.fixed = btScalar(fixed_m);
@@ -463,7 +471,9 @@ bool mayTouchWithin(const std::vector<const btCollisionObject*>& movers, const s
 			{
 				for (int j = 0; j < numOther; j++)
 				{
-					if (within(mine[i], theirs[j], reach) && (!mine[i].shape || !theirs[j].shape || withinAlongPath(mine[i], theirs[j], reach)))
+					btScalar gjkDistance = 0;
+					if (within(mine[i], theirs[j], reach, &gjkDistance) &&
+						(!mine[i].shape || !theirs[j].shape || withinAlongPath(mine[i], theirs[j], reach, gjkDistance)))
 					{
 						return true;
 					}
@@ -568,8 +578,7 @@ namespace
 double speedWithin_m_s(const btCollisionObject* mover, const btCollisionObject* other, double horizon_s)
 {
 	const Motion motion = relativeMotion(mover, other);
-	const double acceleration_m_s2 = relativeGravity_m_s2(mover, other) + motion.frameAcceleration_m_s2 +
-									 heldAcceleration_m_s2(mover) + heldAcceleration_m_s2(other);
+	const double acceleration_m_s2 = pairAcceleration_m_s2(mover, other, motion, heldAcceleration_m_s2(other));
 	return double(motion.velocity.length()) + motion.spinSpeed_m_s + acceleration_m_s2 * horizon_s;
 }
 }  // namespace
