@@ -447,6 +447,36 @@ TEST(CharpyDirectSolve, AHammerStalledInTheSpecimenIsSteppedAsFarAsItsContactsMo
 	}
 }
 
+// Patch 0048: a joint's split correction does not pass through another joint's capped rows. The standard striker on
+// the sharp anvils at friction 0.1, 10 and 20 us substeps lengthened where the contacts move slowly
+// (--contact-travel=3e-4): the 490 us step the travel takes while the specimen rests on the anvils made the hammer's
+// pivot split its correction for the next 490 us (patch 0044), which pushed through the striker's contacts and turned
+// the halves about the yielding hinge's capped lock, 0.07 mrad of drift that the lock pushed back with the plastic
+// moment after the fold, pressing the legs on the walls (3 kN a leg) while the hammer dragged them through the gap:
+// 168.43 and 162.56 J lost, in 708 and 479 internal steps. The same runs without the longer steps lose 142.86 and
+// 142.85 J; 2 us substeps 142.74 J; the rigid-plastic friction model (ci/models/charpy_friction_model.py) 142.17 J.
+TEST(CharpyDirectSolve, APivotsSplitCorrectionDoesNotPressTheFoldedSpecimenOnTheAnvilWalls)
+{
+	CharpyParameters p = geometry(true);
+	p.friction = 0.1;
+	p.solver = plastic::SolverKind::DirectJoint;
+	p.speculative_contacts = true;
+	p.free_step_s = 5e-3;
+	p.dt_s = 1e-3;
+	for (const double substep_s : {1e-5, 2e-5})
+	{
+		p.contact_substep_s = substep_s;
+		p.contact_travel_m = 0;
+		const CharpyResult substeps = runCharpy(p);
+		ASSERT_TRUE(substeps.passed_anvils) << substep_s;
+		p.contact_travel_m = 3e-4;
+		const CharpyResult travelled = runCharpy(p);
+		EXPECT_TRUE(travelled.passed_anvils) << substep_s;
+		EXPECT_NEAR(travelled.energy_loss_J, substeps.energy_loss_J, 0.01 * substeps.energy_loss_J) << substep_s;
+		EXPECT_LE(travelled.internal_steps, substeps.internal_steps) << substep_s;
+	}
+}
+
 // Patch 0047: the elastic-plastic joints choose their rigid and elastic DOFs by the step being set up. At 3 us substeps
 // with the hammer stalled at 3 m/s (thesis nose) the joint rings elastic; once its elastic energy is spent the policy
 // takes a long step. Chosen by the 3 us step before it, the bending DOF was an explicit spring in a 2.5 ms step, 160
