@@ -279,11 +279,8 @@ TEST(DirectJointSolver, OnlyTheJointsOfClosedLoopsCorrectPositionsWithoutMomentu
 // in that solve: 7.5e-9 rad, and the pin is corrected by moving the other body (0.12 mm left of its 10 mm).
 TEST(DirectJointSolver, ASplitCorrectionDoesNotTurnAnotherJointAboutItsCappedLock)
 {
-	btDefaultCollisionConfiguration configuration;
-	btCollisionDispatcher dispatcher(&configuration);
-	btDbvtBroadphase broadphase;
-	btDirectJointSolver solver;
-	btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
+	SolverWorld direct(true);
+	btDiscreteDynamicsWorld& world = direct.world;
 	world.setGravity(btVector3(0, 0, 0));
 	ASSERT_TRUE(world.getSolverInfo().m_splitImpulse);
 	btBoxShape shape(btVector3(0.5f, 0.05f, 0.05f));
