@@ -684,12 +684,12 @@ void CharpyScene::trackAfterStep(double h_s)
 		m_maxDistance_m = std::max(m_maxDistance_m, double(body->getCenterOfMassPosition().length()));
 	}
 
-	// through the gap or over the top: where each part is when it gets past the anvils
+	// through the gap or over the top: where each part is when it gets behind the anvils' front plane
 	for (size_t i = 0; i < m_parts.size(); i++)
 	{
 		btVector3 lo, hi;
 		m_parts[i]->getAabb(lo, hi);
-		if (!m_partPassed[i] && pastAnvils(*m_parts[i]))
+		if (!m_partPassed[i] && hi.x() < 0)
 		{
 			m_partPassed[i] = true;
 			m_overTheTop = m_overTheTop || lo.y() > m_anvilTop_m;
@@ -799,21 +799,13 @@ bool CharpyScene::broken() const
 	return false;
 }
 
-bool CharpyScene::pastAnvils(const btRigidBody& part) const
-{
-	btVector3 lo, hi;
-	part.getAabb(lo, hi);
-	// behind the anvils' front plane, or over them: above their top with its centre over them (the standard striker
-	// without friction lifts the specimen over the anvils at 9 m/s). A part over them meets them again only if it falls
-	// back, which the clear test's horizon sees; one thrown up in front of them (a rigid specimen) has not passed them
-	return hi.x() <= 0 || (lo.y() > m_anvilTop_m && part.getCenterOfMassPosition().x() < 0);
-}
-
 bool CharpyScene::passedAnvils() const
 {
 	for (const btRigidBody* part : m_parts)
 	{
-		if (!pastAnvils(*part))
+		btVector3 lo, hi;
+		part->getAabb(lo, hi);
+		if (hi.x() > 0)
 		{
 			return false;
 		}

@@ -77,9 +77,8 @@ public:
 	double endToEndBend_rad() const; // rotation angle of the last part relative to the first, about any axis
 	double hammerAngle_rad() const;  // pendulum rotation about Z from the impact position
 	bool broken() const;
-	// every part is past the anvils: behind their front plane (x < 0), through the gap, or above their top, over them
-	bool passedAnvils() const;
-	// the test is over: every part is past the anvils and none can touch an anvil within a frame step, or 1 ms if the
+	bool passedAnvils() const;       // every part is behind the anvils' front plane (x < 0)
+	// the test is over: every part is behind the anvils and none can touch an anvil within a frame step, or 1 ms if the
 	// frame step is longer (plastic::mayTouchWithin); asked after every internal step. The parts may still meet the
 	// hammer (kineticAgainstHammer_j).
 	bool clear() const;
@@ -88,7 +87,7 @@ public:
 	// collision of them with the hammer could dissipate now. A scale of what ending at clear() leaves out, not a bound
 	// over the rest of a run (gravity and the swing change the speeds, and they can meet again).
 	double kineticAgainstHammer_j() const;
-	bool overTheTop() const { return m_overTheTop; }  // a part got past the anvils above their top, not through the gap
+	bool overTheTop() const { return m_overTheTop; }  // a part got behind the anvils above their top, not through the gap
 	double maxPenetration_m() const { return m_maxPenetration_m; }
 	double maxSpeed_m_s() const { return m_maxSpeed_m_s; }        // fastest dynamic body, any step
 	double maxDistance_m() const { return m_maxDistance_m; }      // farthest dynamic body centre from the origin
@@ -107,7 +106,6 @@ private:
 	void createSpecimen();
 	void createJoints();
 	void createHammer();
-	bool pastAnvils(const btRigidBody& part) const;  // behind the anvils or over them
 	// whether a part can touch an anvil or the hammer within horizon_s (plastic::mayTouchWithin); with speculative
 	// contacts, a part within their reach counts only while it is pressed against an anvil or can move half the
 	// reach, or a joint works

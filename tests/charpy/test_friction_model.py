@@ -186,36 +186,6 @@ class FrictionModelTest(unittest.TestCase):
                         self.assertLess(abs(errors[len(errors) // 2]), 0.02, (mu, errors))
             self.assertGreaterEqual(sum(abs(e) < 0.03 for e in model_errors), 48, (frame, sorted(model_errors)))
 
-    def test_frictionless_coarse_runs_go_over_the_top_and_end_past_the_anvils_within_a_hundred_steps(self):
-        if os.environ.get("BP_COARSE_FRICTION_TEST") == "separate":
-            self.skipTest("run with charpy.friction_coarse_steps_match_the_converged_runs")
-        # issue 25 at friction 0, outside the model: the striker, tilted by the swing, lifts the specimen over the
-        # anvils at about 9 m/s. A part above the anvils' top is past them as one behind their front plane is, and the
-        # test ends once no part can touch an anvil within a frame (1 ms at most). Before, such a run went on until the
-        # hammer, swinging up behind the rising halves, met them again 6-10 ms after the fold and carried them behind the
-        # anvils: 95-126 internal steps, over 100 in 11 of these 18 runs, and 0.14-0.46 J more lost near the hammer.
-        # Each coarse run (0.07 ms substeps, the contact travel, frames of 0.1 ms, 1 ms and 1/60 s) is held to 5 % of
-        # its converged run (2 us) and to 100 internal steps; measured -0.9 to +2.5 % in 80-94 steps.
-        iso = ("--anvil-radius=0.001", "--anvil-taper=0.192")
-        speeds = (5.1, 5.2, 5.3)
-        frames = ("1e-4", "1e-3", str(1.0 / 60.0))
-        converged = ("--solver=direct", "--speculative-contacts", "--contact-substep=2e-6", "--dt=1e-3")
-        coarse = ("--solver=direct", "--speculative-contacts", "--contact-substep=7e-5", "--free-step=5e-3", "--contact-travel=3e-4")
-        cases = [("--geometry=standard", "--friction=0", *anvils, f"--impact-speed={v}") for anvils in ((), iso) for v in speeds]
-        results = run_many([(*case, *converged) for case in cases] + [(*case, *coarse, f"--dt={frame}") for case in cases for frame in frames])
-        for case in cases:
-            reference = results[(*case, *converged)]
-            self.assertTrue(reference["over_the_top"] and reference["passed_anvils"], reference)
-            for frame in frames:
-                with self.subTest(case=case, frame=frame):
-                    r = results[(*case, *coarse, f"--dt={frame}")]
-                    self.assertTrue(r["over_the_top"] and r["passed_anvils"], r)
-                    self.assertEqual(r["accuracy"], "over-the-top", r)
-                    self.assertLess(r["max_booked_excess_J"], 1e-3 * r["E0_J"], r)
-                    error = (r["energy_loss_J"] - reference["energy_loss_J"]) / reference["energy_loss_J"]
-                    self.assertLess(abs(error), 0.05, (error, r["energy_loss_J"], reference["energy_loss_J"]))
-                    self.assertLessEqual(r["steps"], 100, r["steps"])
-
     def test_the_thesis_flat_nose_jams_where_the_standard_striker_does_not(self):
         flat = run("--geometry=thesis", "--friction=0.1")
         edge = run("--geometry=standard", "--friction=0.1")
