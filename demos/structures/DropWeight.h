@@ -46,17 +46,23 @@ struct DropWeightAnswer
 struct DropWeightResult : scene::RunStats
 {
 	DropWeightAnswer answer;
-	double kinetic_after_impact_j = 0;  // all bodies, when the ball and the mid-span first move together (NaN: never)
+	// all bodies' kinetic energy when the ball and the mid-span first move together, plus the joints' booked plastic work
+	// and elastic energy then (NaN: never)
+	double kinetic_after_impact_j = 0;
 	double midspan_rotation_rad = 0;    // at the end, from the bodies (positive: the middle went down)
 	double left_support_rotation_rad = 0;
 	double right_support_rotation_rad = 0;
 	double max_inner_rotation_rad = 0;  // largest |rotation| of the other inner joints at the end (0 with 2 segments)
 	double kinetic_end_j = 0;
-	double geometric_plastic_work_j = 0;  // Mp x sum |rotation| of the plastic joints, from the bodies
+	// Mp x sum |rotation| of the plastic joints, from the bodies: their plastic work if they are rigid-plastic; an elastic
+	// joint's rotation holds its spring's too (Mp / k, 0.06 rad for elastic-plastic at 1/3840 s)
+	double geometric_plastic_work_j = 0;
 	double booked_plastic_work_j = 0;
+	double elastic_end_j = 0;           // the elastic energy the joints' springs hold at the end
 	double midspan_error_pct = 0;       // against the estimate
 	double plastic_work_error_pct = 0;  // geometric plastic work against the estimate of the kinetic energy after impact
-	double balance_error_pct = 0;       // (kinetic after impact - kinetic at the end - geometric plastic work) / kinetic after impact
+	// (energy after impact - kinetic at the end - booked plastic work - elastic at the end) / energy after impact
+	double balance_error_pct = 0;
 };
 
 std::vector<std::string> validateDropWeightParameters(const DropWeightParameters& p);

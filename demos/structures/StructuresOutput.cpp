@@ -88,7 +88,7 @@ std::string toJson(const DropWeightParameters& p, const DropWeightResult& r)
 {
 	Json j = solverJson("drop-weight", p.solver);
 	const DropWeightAnswer& a = r.answer;
-	j.add("clamped", p.clamped).add("plastic_moment_Nm", a.plastic_moment_nm).add("beam_mass_kg", a.beam_mass_kg).add("effective_mass_kg", a.effective_mass_kg).add("initial_kinetic_J", a.initial_kinetic_j).add("analytic_kinetic_after_impact_J", a.kinetic_after_impact_j).add("kinetic_after_impact_J", r.kinetic_after_impact_j).add("analytic_midspan_rotation_rad", a.midspan_rotation_rad).add("midspan_rotation_rad", r.midspan_rotation_rad).add("midspan_error_pct", r.midspan_error_pct).add("analytic_support_rotation_rad", a.support_rotation_rad).add("left_support_rotation_rad", r.left_support_rotation_rad).add("right_support_rotation_rad", r.right_support_rotation_rad).add("max_inner_rotation_rad", r.max_inner_rotation_rad).add("kinetic_end_J", r.kinetic_end_j).add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j).add("plastic_work_error_pct", r.plastic_work_error_pct).add("balance_error_pct", r.balance_error_pct).add("solver_fallbacks", long(r.solver_fallbacks)).add("steps", r.internal_steps).add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
+	j.add("clamped", p.clamped).add("plastic_moment_Nm", a.plastic_moment_nm).add("beam_mass_kg", a.beam_mass_kg).add("effective_mass_kg", a.effective_mass_kg).add("initial_kinetic_J", a.initial_kinetic_j).add("analytic_kinetic_after_impact_J", a.kinetic_after_impact_j).add("kinetic_after_impact_J", r.kinetic_after_impact_j).add("analytic_midspan_rotation_rad", a.midspan_rotation_rad).add("midspan_rotation_rad", r.midspan_rotation_rad).add("midspan_error_pct", r.midspan_error_pct).add("analytic_support_rotation_rad", a.support_rotation_rad).add("left_support_rotation_rad", r.left_support_rotation_rad).add("right_support_rotation_rad", r.right_support_rotation_rad).add("max_inner_rotation_rad", r.max_inner_rotation_rad).add("kinetic_end_J", r.kinetic_end_j).add("geometric_plastic_work_J", r.geometric_plastic_work_j).add("booked_plastic_work_J", r.booked_plastic_work_j).add("elastic_end_J", r.elastic_end_j).add("plastic_work_error_pct", r.plastic_work_error_pct).add("balance_error_pct", r.balance_error_pct).add("solver_fallbacks", long(r.solver_fallbacks)).add("steps", r.internal_steps).add("simulated_s", r.simulated_s).add("wall_s", r.wall_s).add("finite", r.finite);
 	return j.str();
 }
 
@@ -153,13 +153,14 @@ std::string toSummary(const DropWeightParameters& p, const DropWeightResult& r)
 	out << "drop weight on a " << (p.clamped ? "clamped" : "simply supported") << " beam, " << plastic::jointMethodName(p.solver.method) << ", " << plastic::solverKindName(p.solver.world.solver) << ", dt "
 		<< p.solver.world.internal_step_s << " s, " << p.solver.world.iterations << " iterations: " << r.internal_steps << " steps (" << r.simulated_s << " s simulated, " << r.solver_fallbacks << " solver fallbacks) in "
 		<< r.wall_s << " s\n";
-	out << "  ball " << a.initial_kinetic_j << " J; kinetic energy after the impact " << r.kinetic_after_impact_j << " J (estimate "
+	out << "  ball " << a.initial_kinetic_j << " J; energy after the impact " << r.kinetic_after_impact_j << " J (estimate "
 		<< a.kinetic_after_impact_j << " J)\n";
 	out << "  mid-span rotation " << r.midspan_rotation_rad << " rad (estimate " << a.midspan_rotation_rad << " rad, " << r.midspan_error_pct
 		<< " %), supports " << r.left_support_rotation_rad << " and " << r.right_support_rotation_rad << " rad (estimate " << a.support_rotation_rad
 		<< " rad)\n";
 	out << "  Mp x rotations " << r.geometric_plastic_work_j << " J (" << r.plastic_work_error_pct << " % against the estimate), booked "
-		<< r.booked_plastic_work_j << " J, kinetic at the end " << r.kinetic_end_j << " J, balance error " << r.balance_error_pct << " %\n";
+		<< r.booked_plastic_work_j << " J, elastic at the end " << r.elastic_end_j << " J, kinetic at the end " << r.kinetic_end_j << " J, balance error "
+		<< r.balance_error_pct << " %\n";
 	return out.str();
 }
 std::string toJson(const PaperClipParameters& p, const PaperClipResult& r)
