@@ -132,7 +132,7 @@ class FrictionModelTest(unittest.TestCase):
         # 0.6 %, 1.4 % and 2.5 % with the ISO anvils at friction 0.2 and 0.25), the median held to 2 % of the converged
         # loss and each run to 3 %, 48 of each frame step's 50 runs to 3 % of the model, and every run to 100 internal
         # steps (issue 25's targets). Measured within 3 % of the model: 50 of 50 at each frame step (mean 1.33 % in
-        # 0.1 ms, 1 ms and 1/60 s frames; 1.30 / 1.33 / 1.32 % before patch 0048); internal steps 76-85 at each. At 0.06 ms substeps
+        # each; 1.30 / 1.33 / 1.32 % before patch 0048); internal steps 76-85 at each. At 0.06 ms substeps
         # (the setting before): 50 of 50 within 3 % (mean 1.21 % in 1 ms frames), but 91-103 steps in 1 ms frames,
         # 89-106 at 1/60 s (the test ran on to the frame's end and a second frame, its spinning halves within the 1/60 s
         # horizon of the clear test: now it ends at the internal step that leaves the specimen clear, within 1 ms, and
