@@ -103,13 +103,6 @@ double Beam::plasticWork_j() const
 	return w;
 }
 
-double Beam::elasticEnergy_j() const
-{
-	double e = 0;
-	for (const Joint& j : m_joints) e += j.elasticEnergy_j();
-	return e;
-}
-
 void Beam::updateForStep(double step_s)
 {
 	for (size_t i = 0; i < m_joints.size(); i++) updateJointForStep(*m_joints[i].constraint, m_specs[i], step_s);

@@ -53,7 +53,6 @@ public:
 	double segmentLength_m() const { return m_segmentLength_m; }
 	const std::vector<std::string>& errors() const { return m_errors; }  // validate(spec): empty for a beam that was built
 	double plasticWork_j() const;
-	double elasticEnergy_j() const;  // what its joints hold now (Joint::elasticEnergy_j)
 	// call before each step: the hinge-motor stand-in's impulse follows the step
 	void updateForStep(double step_s);
 

@@ -55,9 +55,6 @@ struct DropWeightScene::State
 	}
 
 	double site(size_t i) const { return angles[i + 1].angle_rad() - angles[i].angle_rad(); }
-	// what the joints hold: their booked plastic work and the elastic energy of their springs
-	double bookedPlasticWork() const { return beam.plasticWork_j() + rightClamp.plasticWork_j(); }
-	double elasticEnergy() const { return beam.elasticEnergy_j() + rightClamp.elasticEnergy_j(); }
 	double geometricPlasticWork() const
 	{
 		double w = 0;
@@ -152,6 +149,9 @@ DropWeightScene::DropWeightScene(const DropWeightParameters& p) : m(std::make_un
 	for (btRigidBody* b : segments) s.ledger->addBody(*b);
 	s.ledger->addBody(*s.carriage);
 	s.ledger->addBody(*s.ball);
+	// and the plastic joints: their booked work and their springs' elastic energy
+	for (const plastic::Joint& joint : s.beam.joints()) s.ledger->addJoint(joint);
+	if (p.clamped) s.ledger->addJoint(s.rightClamp);
 	// the plastic joints: the beam's (with the left clamp first when clamped), then the right clamp
 	const size_t first = p.clamped ? 0 : 1;  // site of the beam's first joint
 	for (size_t j = 0; j < s.beam.joints().size(); j++)
@@ -191,7 +191,8 @@ void DropWeightScene::step()
 	State& s = *m;
 	if (done()) return;
 	s.rig.step();
-	const double kinetic = s.ledger->measure().kinetic_j;
+	const plastic::Energies energies = s.ledger->measure();
+	const double kinetic = energies.kinetic_j;
 	if (!std::isfinite(kinetic))
 	{
 		s.finite = false;
@@ -204,7 +205,7 @@ void DropWeightScene::step()
 	// what the joints took during the impact, as plastic work and as elastic energy (Mp times the rotation counts an
 	// elastic joint's spring at Mp: 124 J too much for elastic-plastic at 1/3840 s)
 	if (std::isnan(s.kinetic_after_impact_j) && std::fabs(s.ball->getLinearVelocity().y() - midspanVelocity) < 0.01 * s.p.impact_speed_m_s)
-		s.kinetic_after_impact_j = kinetic + s.bookedPlasticWork() + s.elasticEnergy();
+		s.kinetic_after_impact_j = kinetic + energies.plastic_j + energies.elastic_j;
 	const double midspan = s.site(s.mid);
 	s.deepest = std::max(s.deepest, midspan);
 	// stopped: the middle no longer moves (the ball may drift off), or it springs back
@@ -224,10 +225,11 @@ DropWeightResult DropWeightScene::result() const
 	r.right_support_rotation_rad = -s.site(sites - 1);
 	for (size_t i = 1; i + 1 < sites; i++)
 		if (i != s.mid) r.max_inner_rotation_rad = std::max(r.max_inner_rotation_rad, std::fabs(s.site(i)));
-	r.kinetic_end_j = s.ledger->measure().kinetic_j;
+	const plastic::Energies end = s.ledger->measure();
+	r.kinetic_end_j = end.kinetic_j;
 	r.geometric_plastic_work_j = s.geometricPlasticWork();
-	r.booked_plastic_work_j = s.bookedPlasticWork();
-	r.elastic_end_j = s.elasticEnergy();
+	r.booked_plastic_work_j = end.plastic_j;
+	r.elastic_end_j = end.elastic_j;
 	const DropWeightAnswer& a = r.answer;
 	r.midspan_error_pct = 100 * (r.midspan_rotation_rad - a.midspan_rotation_rad) / a.midspan_rotation_rad;
 	r.plastic_work_error_pct = 100 * (r.geometric_plastic_work_j - a.kinetic_after_impact_j) / a.kinetic_after_impact_j;
