@@ -29,6 +29,7 @@ struct DropWeightParameters : scene::RectangularMember
 	double weight_radius_m = 0.05;
 	double impact_speed_m_s = 4.5;
 	double duration_s = 2.0;  // at most; the run ends when the beam has stopped
+	bool run_to_duration = false;  // true: it runs on to duration_s after the beam has stopped
 };
 
 struct DropWeightAnswer

@@ -209,7 +209,8 @@ void DropWeightScene::step()
 	const double midspan = s.site(s.mid);
 	s.deepest = std::max(s.deepest, midspan);
 	// stopped: the middle no longer moves (the ball may drift off), or it springs back
-	if (!std::isnan(s.kinetic_after_impact_j) && midspan > 0 && (std::fabs(midspanVelocity) < 1e-3 * s.p.impact_speed_m_s || midspan < s.deepest - 1e-3))
+	if (!s.p.run_to_duration && !std::isnan(s.kinetic_after_impact_j) && midspan > 0 &&
+		(std::fabs(midspanVelocity) < 1e-3 * s.p.impact_speed_m_s || midspan < s.deepest - 1e-3))
 		s.finished = true;
 }
 

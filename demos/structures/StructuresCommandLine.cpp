@@ -160,6 +160,7 @@ const Flags<DropWeightParameters>& dropWeightFlags()
 		f["weight-mass"] = numberFlag(&P::weight_mass_kg, "KG  G, default 1000");
 		f["weight-radius"] = numberFlag(&P::weight_radius_m, "M  default 0.05");
 		f["impact-speed"] = numberFlag(&P::impact_speed_m_s, "M_S  v0, default 4.5");
+		f["full-duration"] = switchFlag(&P::run_to_duration, "runs to --duration after the beam has stopped (default: the run ends there)");
 		return f;
 	}();
 	return flags;
