@@ -87,7 +87,12 @@ struct PortalResult : scene::RunStats
 	double load_work_j = 0;
 	double kinetic_j = 0;
 	double booked_plastic_work_j = 0;
-	double geometric_plastic_work_j = 0;  // Mp x sum |site rotation| from the bodies
+	// Mp x sum |site rotation| from the bodies: the plastic work of rigid-plastic joints; an elastic joint's rotation
+	// holds its spring's too (patch 0047 makes the elastic-plastic joints springs at fine steps)
+	double geometric_plastic_work_j = 0;
+	double elastic_j = 0;  // the elastic energy the joints' springs hold at the end
+	// (load work - kinetic - booked plastic work - elastic) / load work
+	double energy_balance_error_pct = 0;
 	std::vector<double> sway_load_ratios;        // sway pushover: H h / (4 Mp) before each of sway_drifts
 	std::vector<double> sway_measured_drifts;    // and the left knee's drift then
 	std::vector<double> second_order_load_ratios;  // swaySecondOrderRatio at each measured drift

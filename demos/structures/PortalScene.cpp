@@ -150,6 +150,7 @@ PortalScene::PortalScene(const PortalParameters& p) : m(std::make_unique<State>(
 		s.sites.push_back(scene::jointSite(*s.joints[i], a, *b, pivots[i]));
 	}
 	for (size_t i = 1; i + 1 < s.path.size(); i++) s.ledger.addBody(*s.path[i]);
+	for (const plastic::Joint* joint : s.joints) s.ledger.addJoint(*joint);
 	s.ramp = p.ramp_rate_per_s > 0 && !s.pushover();
 	State* state = m.get();
 	s.rig.beforeEachStep([state](double step_s)
@@ -233,9 +234,12 @@ PortalResult PortalScene::result() const
 		for (double force_n : s.actuator.meanForces_n()) r.sway_load_ratios.push_back(force_n * s.p.height_m / (4 * mp));
 		for (double d : r.sway_measured_drifts) r.second_order_load_ratios.push_back(swaySecondOrderRatio(s.p, d));
 	}
-	r.kinetic_j = s.ledger.measure().kinetic_j;
-	for (const plastic::Joint* j : s.joints) r.booked_plastic_work_j += j->plasticWork_j();
+	const plastic::Energies energies = s.ledger.measure();
+	r.kinetic_j = energies.kinetic_j;
+	r.booked_plastic_work_j = energies.plastic_j;
+	r.elastic_j = energies.elastic_j;
 	for (double x : r.rotations_rad) r.geometric_plastic_work_j += mp * std::fabs(x);
+	if (r.load_work_j > 0) r.energy_balance_error_pct = 100.0 * (r.load_work_j - r.kinetic_j - r.booked_plastic_work_j - r.elastic_j) / r.load_work_j;
 	static_cast<scene::RunStats&>(r) = s.rig.runStats(s.start, s.finite);
 	return r;
 }
