@@ -118,8 +118,8 @@ TEST(PortalScene, ElasticPlastic2StiffFrameCollapsesAtTheFirstOrderLoad)
 }
 
 // The loads' work, measured at their points, goes into the joints' booked plastic work, their springs and what still
-// moves. At 1/3840 s the elastic-plastic joints are elastic springs (patch 0047) that hold 9772 J at the end beside
-// 10784 J of plastic work; Mp times the rotations counts the springs' rotation at Mp too (32313 J), so only the
+// moves. At 1/3840 s the elastic-plastic joints are elastic springs (patch 0047) that hold 9776 J at the end beside
+// 10813 J of plastic work; Mp times the rotations counts the springs' rotation at Mp too (32346 J), so only the
 // rigid-plastic run's geometric work agrees with its booked work.
 TEST(PortalScene, TheLoadsWorkBalancesTheJointsPlasticWorkAndSprings)
 {
@@ -133,7 +133,8 @@ TEST(PortalScene, TheLoadsWorkBalancesTheJointsPlasticWorkAndSprings)
 		const std::string what = "elastic-plastic at " + std::to_string(step_s) + " s";
 		ASSERT_TRUE(r.finite) << what;
 		ASSERT_GT(r.load_work_j, 0.0) << what;
-		EXPECT_NEAR(r.load_work_j, r.kinetic_j + r.booked_plastic_work_j + r.elastic_j, 0.005 * r.load_work_j) << what;
+		EXPECT_NEAR(r.energy_balance_error_pct, 0.0, 0.5) << what << ": load work " << r.load_work_j << " J, kinetic " << r.kinetic_j
+														<< " J, booked " << r.booked_plastic_work_j << " J, elastic " << r.elastic_j << " J";
 		if (step_s > 1e-3)
 		{
 			EXPECT_EQ(r.elastic_j, 0.0) << what << ": rigid-plastic DOFs at this step";
