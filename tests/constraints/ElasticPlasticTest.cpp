@@ -220,6 +220,34 @@ TYPED_TEST(ElasticPlastic, ADofIsRigidOrElasticByTheStepItIsSolvedInNotTheOneBef
 	EXPECT_TRUE(std::isfinite(after));
 }
 
+// btTypedConstraint::isSpringRow (patch 0049) names the row of a DOF that is an elastic spring in the step solved, by
+// the row index the solver reports it at: DOF 3's row while it is elastic (10 us steps), not once it is a rigid-plastic
+// lock (a 5 ms step), and never a rigid DOF's row or a row past the constraint's.
+TYPED_TEST(ElasticPlastic, ASpringsRowIsNamedOnlyWhileItsDofIsElastic)
+{
+	Rig<TypeParam> rig;
+	const double inertia = rig.body->getLocalInertia().x();
+	setStiffness(rig.c, 3, inertia * 3000.0 * 3000.0);
+	rig.c->setMaxForce(3, btScalar(1e6));
+	rig.body->setAngularVelocity(btVector3(5, 0, 0));
+	rig.w.world.stepSimulation(btScalar(1e-5), 0);
+	const int row = rig.c->getDofFirstRow(3);
+	ASSERT_EQ(rig.c->getDofNumRows(3), 1);
+	EXPECT_TRUE(rig.c->isSpringRow(row)) << "elastic in a 10 us step";
+	for (int i = 0; i < 6; i++)
+	{
+		if (i != 3)
+		{
+			EXPECT_FALSE(rig.c->isSpringRow(rig.c->getDofFirstRow(i))) << "rigid DOF " << i;
+		}
+	}
+	EXPECT_FALSE(rig.c->isSpringRow(-1));
+	EXPECT_FALSE(rig.c->isSpringRow(6));
+	rig.w.world.stepSimulation(btScalar(5e-3), 0);
+	EXPECT_EQ(rig.c->getDofFirstRow(3), row);
+	EXPECT_FALSE(rig.c->isSpringRow(row)) << "a rigid-plastic lock in a 5 ms step, 2.4 times its period";
+}
+
 // A rigid-plastic DOF that is pushed off its lock but held back with far less than its maximum force is
 // position drift, not plastic flow: no work is booked and the lock pulls it back.
 TYPED_TEST(ElasticPlastic, DriftHeldBelowTheCapIsNotPlasticFlow)
