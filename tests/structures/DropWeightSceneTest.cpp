@@ -24,6 +24,15 @@ DropWeightParameters converged(bool clamped)
 	p.solver.world.iterations = 1000;
 	return p;
 }
+
+// the run to the beam's stop, and the same run on to 0.4 s (--full-duration)
+std::pair<DropWeightResult, DropWeightResult> stoppedAndLater(DropWeightParameters p)
+{
+	const DropWeightResult stopped = runDropWeight(p);
+	p.duration_s = 0.4;
+	p.run_to_duration = true;
+	return {stopped, runDropWeight(p)};
+}
 }  // namespace
 
 // 1000 kg at 4.5 m/s on a 2 m, 50 x 100 mm beam of 78 kg in two segments; by hand: each half (39 kg, 1 m x 0.1 m)
@@ -122,10 +131,7 @@ TEST(DropWeightScene, AStoppedBeamBooksNoWorkItsBodiesDoNotLose)
 		DropWeightParameters p;
 		p.solver.method = c.first;
 		p.solver.world.internal_step_s = c.second;
-		const DropWeightResult stopped = runDropWeight(p);
-		p.duration_s = 0.4;
-		p.run_to_duration = true;
-		const DropWeightResult later = runDropWeight(p);
+		const auto [stopped, later] = stoppedAndLater(p);
 		const std::string what = plastic::jointMethodName(c.first) + std::string(" at ") + std::to_string(c.second) + " s";
 		ASSERT_LT(stopped.simulated_s, 0.1) << what;
 		ASSERT_NEAR(later.simulated_s, 0.4, c.second) << what;
@@ -149,10 +155,7 @@ TEST(DropWeightScene, ClampedByElasticPlastic2JointsKeepsItsEnergyAfterItStops)
 		p.clamped = true;
 		p.solver.method = plastic::JointMethod::ElasticPlastic2;
 		p.solver.world.internal_step_s = step_s;
-		const DropWeightResult stopped = runDropWeight(p);
-		p.duration_s = 0.4;
-		p.run_to_duration = true;
-		const DropWeightResult later = runDropWeight(p);
+		const auto [stopped, later] = stoppedAndLater(p);
 		const std::string what = "elastic-plastic2, clamped, at " + std::to_string(step_s) + " s";
 		ASSERT_TRUE(later.finite) << what;
 		const double energyStopped = stopped.kinetic_end_j + stopped.elastic_end_j + stopped.booked_plastic_work_j;
