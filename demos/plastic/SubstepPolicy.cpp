@@ -371,12 +371,14 @@ bool betweenSets(const btPersistentManifold& manifold, const std::vector<const b
 	return moverIsBody0 || (in(movers, b) && in(others, a));
 }
 
-// Whether a point of the manifold carried an impulse in the world's last step
-bool carriedImpulse(const btPersistentManifold& manifold)
+// Whether a point of the manifold carried an impulse in the world's last step (with withFriction, a point whose combined
+// friction is above 0)
+bool carriedImpulse(const btPersistentManifold& manifold, bool withFriction = false)
 {
 	for (int j = 0; j < manifold.getNumContacts(); j++)
 	{
-		if (manifold.getContactPoint(j).getAppliedImpulse() > 0)
+		const btManifoldPoint& point = manifold.getContactPoint(j);
+		if (point.getAppliedImpulse() > 0 && (!withFriction || point.m_combinedFriction > 0))
 		{
 			return true;
 		}
@@ -634,13 +636,13 @@ double contactSpeed_m_s(btDispatcher& dispatcher, const std::vector<const btColl
 }
 
 bool pressedContact(btDispatcher& dispatcher, const std::vector<const btCollisionObject*>& movers,
-					const std::vector<const btCollisionObject*>& others)
+					const std::vector<const btCollisionObject*>& others, bool withFriction)
 {
 	for (int i = 0; i < dispatcher.getNumManifolds(); i++)
 	{
 		const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(i);
 		bool moverIsBody0 = false;
-		if (betweenSets(*manifold, movers, others, moverIsBody0) && carriedImpulse(*manifold))
+		if (betweenSets(*manifold, movers, others, moverIsBody0) && carriedImpulse(*manifold, withFriction))
 		{
 			return true;
 		}

@@ -95,9 +95,11 @@ double contactSpeed_m_s(btDispatcher& dispatcher, const std::vector<const btColl
 
 // Whether a contact point between a body of `movers` and one of `others` carried an impulse in the world's last
 // step (their manifolds as the dispatcher holds them): a pair pressed together, whose forces a longer step would
-// change, as against one that touches only through speculative points that hold nothing.
+// change, as against one that touches only through speculative points that hold nothing. With `withFriction`, only a
+// point whose combined friction is above 0 counts: a pair pressed and sliding whose friction a longer step would
+// change, as against one that slides without friction, whose force does no work along the slide.
 bool pressedContact(btDispatcher& dispatcher, const std::vector<const btCollisionObject*>& movers,
-					const std::vector<const btCollisionObject*>& others);
+					const std::vector<const btCollisionObject*>& others, bool withFriction = false);
 
 struct ContactSubstepSettings
 {

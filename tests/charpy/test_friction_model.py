@@ -186,6 +186,53 @@ class FrictionModelTest(unittest.TestCase):
                         self.assertLess(abs(errors[len(errors) // 2]), 0.02, (mu, errors))
             self.assertGreaterEqual(sum(abs(e) < 0.03 for e in model_errors), 48, (frame, sorted(model_errors)))
 
+    def test_high_friction_converges_at_coarser_substeps(self):
+        # friction 0.25 with the sharp anvils at 80-120 us substeps: each run within 1 % of the converged loss (patch
+        # 0050). Before it the cone shares of a half's contacts cycled to the iteration cap and the step kept whichever
+        # solve the cap fell on: 183.2-187.8 J at 80 us, 181.0-184.0 J at 90 us and 183.2-187.5 J at 100 us against
+        # 188.2 J (measured 187.5-188.1 J now)
+        coarse = ("--solver=direct", "--speculative-contacts", "--free-step=5e-3", "--contact-travel=3e-4", "--dt=1e-3")
+        speeds = (5.1, 5.15, 5.2, 5.25, 5.3)
+        substeps = ("8e-5", "9e-5", "1e-4", "1.2e-4")
+        converged = ("--geometry=standard", "--friction=0.25", "--impact-speed=5.2", "--solver=direct", "--speculative-contacts")
+        runs = [("--geometry=standard", "--friction=0.25", f"--impact-speed={v}", f"--contact-substep={h}", *coarse)
+                for h in substeps for v in speeds]
+        results = run_many([converged] + runs)
+        reference = results[converged]["energy_loss_J"]
+        for flags in runs:
+            r = results[flags]
+            with self.subTest(flags=flags):
+                self.assertTrue(r["passed_anvils"] and not r["over_the_top"], r)
+                self.assertLess(abs(r["energy_loss_J"] - reference) / reference, 0.01, (r["energy_loss_J"], reference))
+
+    def test_the_frictionless_striker_goes_over_the_top_within_5_percent_of_converged_in_few_steps(self):
+        # Without friction the specimen rides over the anvils (the model's pass does not apply): issue 25's target is
+        # the converged loss. 70 us substeps, the five speeds, both anvils, three frame steps. A part pressed on an
+        # anvil without friction no longer holds the substep while its joint does not flow (it took 103-126 internal
+        # steps at 1 ms frames, now 72-100); the ISO anvils' runs still take up to 110 at 0.1 ms and 1/60 s frames,
+        # a half bouncing on a rounded edge during the fold (issue 25 left open), hence the bound of 110 there
+        iso = ("--anvil-radius=0.001", "--anvil-taper=0.192")
+        speeds = (5.1, 5.15, 5.2, 5.25, 5.3)
+        frames = ("1e-4", "1e-3", str(1.0 / 60.0))
+        converged = ("--solver=direct", "--speculative-contacts")
+
+        def coarse_of(frame):
+            return ("--solver=direct", "--speculative-contacts", "--contact-substep=7e-5", "--free-step=5e-3",
+                    "--contact-travel=3e-4", f"--dt={frame}")
+        cases = [(anvils, v) for anvils in ((), iso) for v in speeds]
+        results = run_many([("--geometry=standard", *anvils, f"--impact-speed={v}", *converged) for anvils, v in cases]
+                           + [("--geometry=standard", *anvils, f"--impact-speed={v}", *coarse_of(frame))
+                              for frame in frames for anvils, v in cases])
+        for frame in frames:
+            for anvils, v in cases:
+                with self.subTest(frame=frame, anvils=anvils, v=v):
+                    reference = results[("--geometry=standard", *anvils, f"--impact-speed={v}", *converged)]["energy_loss_J"]
+                    r = results[("--geometry=standard", *anvils, f"--impact-speed={v}", *coarse_of(frame))]
+                    self.assertTrue(r["passed_anvils"], r)
+                    self.assertLess(r["max_energy_gain_J"], 1e-4 * r["E0_J"], r)
+                    self.assertLess(abs(r["energy_loss_J"] - reference) / reference, 0.05, (r["energy_loss_J"], reference))
+                    self.assertLessEqual(r["steps"], 100 if frame == "1e-3" or not anvils else 110, r["steps"])
+
     def test_the_thesis_flat_nose_jams_where_the_standard_striker_does_not(self):
         flat = run("--geometry=thesis", "--friction=0.1")
         edge = run("--geometry=standard", "--friction=0.1")

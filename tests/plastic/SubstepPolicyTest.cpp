@@ -392,6 +392,53 @@ TEST(SubstepPolicy, AContactIsPressedWhileItCarriesAnImpulse)
 	world.removeRigidBody(&floor);
 }
 
+TEST(SubstepPolicy, APressedContactWithFrictionIsOneWhoseFrictionCanWork)
+{
+	// two balls resting on two static slabs, one slab with friction 0: both balls are pressed, only the one on the
+	// rough slab through a contact with friction (a frictionless contact's force does no work along a slide)
+	btDefaultCollisionConfiguration configuration;
+	btCollisionDispatcher dispatcher(&configuration);
+	btDbvtBroadphase broadphase;
+	btSequentialImpulseConstraintSolver solver;
+	btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
+	world.setGravity(btVector3(0, btScalar(-9.81), 0));
+	btBoxShape slabShape(btVector3(1, btScalar(0.1), 1));
+	btSphereShape ballShape(btScalar(0.1));
+	btTransform t;
+	t.setIdentity();
+	t.setOrigin(btVector3(0, btScalar(-0.1), 0));
+	btRigidBody rough(0, nullptr, &slabShape);
+	rough.setWorldTransform(t);
+	rough.setFriction(btScalar(0.5));
+	t.setOrigin(btVector3(5, btScalar(-0.1), 0));
+	btRigidBody smooth(0, nullptr, &slabShape);
+	smooth.setWorldTransform(t);
+	smooth.setFriction(0);
+	btRigidBody onRough(1, nullptr, &ballShape, btVector3(btScalar(0.004), btScalar(0.004), btScalar(0.004)));
+	t.setOrigin(btVector3(0, btScalar(0.1), 0));
+	onRough.setWorldTransform(t);
+	btRigidBody onSmooth(1, nullptr, &ballShape, btVector3(btScalar(0.004), btScalar(0.004), btScalar(0.004)));
+	t.setOrigin(btVector3(5, btScalar(0.1), 0));
+	onSmooth.setWorldTransform(t);
+	for (btRigidBody* body : {&rough, &smooth, &onRough, &onSmooth})
+	{
+		world.addRigidBody(body);
+	}
+	for (int i = 0; i < 20; i++)
+	{
+		world.stepSimulation(btScalar(1e-3), 0);
+	}
+	const std::vector<const btCollisionObject*> roughBall{&onRough}, smoothBall{&onSmooth}, slabs{&rough, &smooth};
+	EXPECT_TRUE(plastic::pressedContact(dispatcher, roughBall, slabs));
+	EXPECT_TRUE(plastic::pressedContact(dispatcher, smoothBall, slabs));
+	EXPECT_TRUE(plastic::pressedContact(dispatcher, roughBall, slabs, true));
+	EXPECT_FALSE(plastic::pressedContact(dispatcher, smoothBall, slabs, true));
+	for (btRigidBody* body : {&onSmooth, &onRough, &smooth, &rough})
+	{
+		world.removeRigidBody(body);
+	}
+}
+
 TEST(SubstepPolicy, TheContactSpeedIsTheFastestPairInOrNearContact)
 {
 	// a ball resting on a static floor, rolled along it at 0.2 m/s (spin 2 rad/s; its reach is its box's corner,
