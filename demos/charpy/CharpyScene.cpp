@@ -540,13 +540,13 @@ bool CharpyScene::nearContact(double horizon_s) const
 	}
 	// After the fold the halves slide along the anvils' walls 30-80 um away, or ride on the hammer's nose, for 5-10
 	// ms: left to the speculative contacts, these steps are no longer substeps. The substep holds while a part is
-	// pressed against an anvil through a contact with friction (whose loss a longer step would change), while the
-	// hammer comes at the specimen (its gap is past the reach), and while a joint flows or holds elastic energy (a longer
-	// step would change what it books: an elastic-plastic joint still ringing booked 5.3 J of flow in one 86 us step);
-	// both are known after each step (m_holdSubstep). A part pressed against an anvil without friction, its joint not
-	// flowing, is left to the speculative contacts as any other pair: after the fold a frictionless specimen rides over
-	// the anvils pressed on them, and held at the substep there it took 14-17 substeps more (standard striker, 1 ms
-	// frames, 70 us substeps: 103-126 internal steps, now 72-100).
+	// pressed against an anvil through a contact with friction (whose loss a longer step would change) or at rest,
+	// while the hammer comes at the specimen (its gap is past the reach), and while a joint flows or holds elastic
+	// energy (a longer step would change what it books: an elastic-plastic joint still ringing booked 5.3 J of flow in
+	// one 86 us step); both are known after each step (m_holdSubstep). A part pressed against an anvil without friction
+	// and sliding on it, its joint not flowing, is left to the speculative contacts as any other pair: after the fold a
+	// frictionless specimen rides over the anvils pressed on them, and held at the substep there it took up to 26
+	// substeps more (standard striker, 1 ms frames, 70 us substeps: 103-126 internal steps, now 72-110).
 	return m_holdSubstep ||
 		   plastic::mayTouchWithin(m_contactMovers, m_contactOthers, horizon_s, nearClearance_m(m_parameters), speculativeReach_m());
 }
@@ -648,7 +648,7 @@ void CharpyScene::internalStep(double h_s)
 	if (m_parameters.speculative_contacts)
 	{
 		// what nearContact holds the substep for, from this step: a joint flowed or holds elastic energy, or a part
-		// was pressed against an anvil through a contact with friction
+		// was pressed against an anvil through a contact with friction or at rest
 		double rotation = 0, elastic = 0;
 		for (const plastic::Joint& joint : m_impl->joints)
 		{
@@ -656,8 +656,12 @@ void CharpyScene::internalStep(double h_s)
 			elastic += joint.elasticEnergy_j();
 		}
 		m_jointFlowed = rotation != m_jointRotation_rad;
+		// a frictionless contact whose part slides on it by more than 1 % of the speculative reach in a substep (what
+		// counts as touching, timeToTouch_s) no longer holds it; one at rest (the specimen lying on its supports) does
+		const double h = m_parameters.contact_substep_s;
+		const double slide_m_s = h > 0 ? 0.01 * speculativeReach_m() / h : std::numeric_limits<double>::infinity();
 		m_holdSubstep = m_jointFlowed || elastic > 0 ||
-						plastic::pressedContact(*m_world->getDispatcher(), m_contactMovers, m_contactAnvils, true);
+						plastic::pressedContact(*m_world->getDispatcher(), m_contactMovers, m_contactAnvils, slide_m_s);
 		m_jointRotation_rad = rotation;
 	}
 	trackAfterStep(h_s);

@@ -371,14 +371,35 @@ bool betweenSets(const btPersistentManifold& manifold, const std::vector<const b
 	return moverIsBody0 || (in(movers, b) && in(others, a));
 }
 
-// Whether a point of the manifold carried an impulse in the world's last step (with withFriction, a point whose combined
-// friction is above 0)
-bool carriedImpulse(const btPersistentManifold& manifold, bool withFriction = false)
+// Whether a point of the manifold carried an impulse in the world's last step; a point without friction whose bodies
+// slide past each other there faster than frictionlessSlide_m_s does not count
+bool carriedImpulse(const btPersistentManifold& manifold, double frictionlessSlide_m_s = std::numeric_limits<double>::infinity())
 {
+	const btRigidBody* body0 = movingBody(manifold.getBody0());
+	const btRigidBody* body1 = movingBody(manifold.getBody1());
 	for (int j = 0; j < manifold.getNumContacts(); j++)
 	{
 		const btManifoldPoint& point = manifold.getContactPoint(j);
-		if (point.getAppliedImpulse() > 0 && (!withFriction || point.m_combinedFriction > 0))
+		if (!(point.getAppliedImpulse() > 0))
+		{
+			continue;
+		}
+		if (point.m_combinedFriction > 0 || std::isinf(frictionlessSlide_m_s))
+		{
+			return true;
+		}
+		const btVector3 at = (point.getPositionWorldOnA() + point.getPositionWorldOnB()) * btScalar(0.5);
+		btVector3 relative(0, 0, 0);
+		if (body0)
+		{
+			relative += body0->getVelocityInLocalPoint(at - body0->getCenterOfMassPosition());
+		}
+		if (body1)
+		{
+			relative -= body1->getVelocityInLocalPoint(at - body1->getCenterOfMassPosition());
+		}
+		const btVector3 slide = relative - point.m_normalWorldOnB * relative.dot(point.m_normalWorldOnB);
+		if (!(double(slide.length()) > frictionlessSlide_m_s))
 		{
 			return true;
 		}
@@ -636,13 +657,13 @@ double contactSpeed_m_s(btDispatcher& dispatcher, const std::vector<const btColl
 }
 
 bool pressedContact(btDispatcher& dispatcher, const std::vector<const btCollisionObject*>& movers,
-					const std::vector<const btCollisionObject*>& others, bool withFriction)
+					const std::vector<const btCollisionObject*>& others, double frictionlessSlide_m_s)
 {
 	for (int i = 0; i < dispatcher.getNumManifolds(); i++)
 	{
 		const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(i);
 		bool moverIsBody0 = false;
-		if (betweenSets(*manifold, movers, others, moverIsBody0) && carriedImpulse(*manifold, withFriction))
+		if (betweenSets(*manifold, movers, others, moverIsBody0) && carriedImpulse(*manifold, frictionlessSlide_m_s))
 		{
 			return true;
 		}

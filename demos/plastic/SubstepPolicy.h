@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -95,11 +96,13 @@ double contactSpeed_m_s(btDispatcher& dispatcher, const std::vector<const btColl
 
 // Whether a contact point between a body of `movers` and one of `others` carried an impulse in the world's last
 // step (their manifolds as the dispatcher holds them): a pair pressed together, whose forces a longer step would
-// change, as against one that touches only through speculative points that hold nothing. With `withFriction`, only a
-// point whose combined friction is above 0 counts: a pair pressed and sliding whose friction a longer step would
-// change, as against one that slides without friction, whose force does no work along the slide.
+// change, as against one that touches only through speculative points that hold nothing. A point without friction
+// whose bodies slide past each other there faster than frictionlessSlide_m_s does not count: its force does no work
+// along the slide (a Charpy specimen riding over the anvils after its fold), while a point at rest under a load (a
+// specimen lying on its supports) or one with friction does.
 bool pressedContact(btDispatcher& dispatcher, const std::vector<const btCollisionObject*>& movers,
-					const std::vector<const btCollisionObject*>& others, bool withFriction = false);
+					const std::vector<const btCollisionObject*>& others,
+					double frictionlessSlide_m_s = std::numeric_limits<double>::infinity());
 
 struct ContactSubstepSettings
 {

@@ -392,10 +392,10 @@ TEST(SubstepPolicy, AContactIsPressedWhileItCarriesAnImpulse)
 	world.removeRigidBody(&floor);
 }
 
-TEST(SubstepPolicy, APressedContactWithFrictionIsOneWhoseFrictionCanWork)
+TEST(SubstepPolicy, AFrictionlessContactThatSlidesIsNotPressed)
 {
-	// two balls resting on two static slabs, one slab with friction 0: both balls are pressed, only the one on the
-	// rough slab through a contact with friction (a frictionless contact's force does no work along a slide)
+	// two balls on two static slabs, one slab with friction 0: at rest both balls are pressed; sliding at 1 m/s the ball
+	// on the smooth slab is not (a frictionless force does no work along the slide), the one on the rough slab is
 	btDefaultCollisionConfiguration configuration;
 	btCollisionDispatcher dispatcher(&configuration);
 	btDbvtBroadphase broadphase;
@@ -422,6 +422,7 @@ TEST(SubstepPolicy, APressedContactWithFrictionIsOneWhoseFrictionCanWork)
 	onSmooth.setWorldTransform(t);
 	for (btRigidBody* body : {&rough, &smooth, &onRough, &onSmooth})
 	{
+		body->setActivationState(DISABLE_DEACTIVATION);
 		world.addRigidBody(body);
 	}
 	for (int i = 0; i < 20; i++)
@@ -429,10 +430,15 @@ TEST(SubstepPolicy, APressedContactWithFrictionIsOneWhoseFrictionCanWork)
 		world.stepSimulation(btScalar(1e-3), 0);
 	}
 	const std::vector<const btCollisionObject*> roughBall{&onRough}, smoothBall{&onSmooth}, slabs{&rough, &smooth};
-	EXPECT_TRUE(plastic::pressedContact(dispatcher, roughBall, slabs));
-	EXPECT_TRUE(plastic::pressedContact(dispatcher, smoothBall, slabs));
-	EXPECT_TRUE(plastic::pressedContact(dispatcher, roughBall, slabs, true));
-	EXPECT_FALSE(plastic::pressedContact(dispatcher, smoothBall, slabs, true));
+	const double slide_m_s = 0.01;
+	EXPECT_TRUE(plastic::pressedContact(dispatcher, roughBall, slabs, slide_m_s));
+	EXPECT_TRUE(plastic::pressedContact(dispatcher, smoothBall, slabs, slide_m_s)) << "at rest";
+	onRough.setLinearVelocity(btVector3(1, 0, 0));
+	onSmooth.setLinearVelocity(btVector3(1, 0, 0));
+	world.stepSimulation(btScalar(1e-3), 0);
+	EXPECT_TRUE(plastic::pressedContact(dispatcher, roughBall, slabs, slide_m_s)) << "friction works along the slide";
+	EXPECT_FALSE(plastic::pressedContact(dispatcher, smoothBall, slabs, slide_m_s));
+	EXPECT_TRUE(plastic::pressedContact(dispatcher, smoothBall, slabs)) << "without a bound on the slide";
 	for (btRigidBody* body : {&onSmooth, &onRough, &smooth, &rough})
 	{
 		world.removeRigidBody(body);
