@@ -242,6 +242,10 @@ void CharpyScene::createWorld()
 	m_world->getSolverInfo().m_numIterations = m_parameters.solver_iterations;
 	m_world->getDispatchInfo().m_speculativeBoxBoxContacts = m_parameters.speculative_contacts;
 	m_world->getDispatchInfo().m_boxBoxEdgesAcrossFaces = m_parameters.box_edges_across_faces || m_parameters.speculative_contacts;
+	// and a capsule (the striker's edge, an ISO anvil's rounded edge) lying along a part's face touches it at both ends
+	// (patch 0051): with GJK's one point a step the far end's point slid off, and the striker and an anvil held a half
+	// at opposite ends of its face and spun it off the anvil
+	m_world->getDispatchInfo().m_capsuleFaceLineContacts = m_parameters.speculative_contacts;
 }
 
 void CharpyScene::createAnvils()

@@ -130,8 +130,9 @@ class FrictionModelTest(unittest.TestCase):
         # with the sharp anvils, +0.4 to +1.0 % with the ISO anvils). The loss at coarse steps depends a little on the
         # run, so each case runs at five impact speeds, 5.1-5.3 m/s (the converged loss moves with the speed by at most
         # 0.6 %, 1.4 % and 2.5 % with the ISO anvils at friction 0.2 and 0.25), the median held to 2 % of the converged
-        # loss and each run to 3 %, 48 of each frame step's 50 runs to 3 % of the model, and every run to 100 internal
-        # steps (issue 25's targets). Measured within 3 % of the model: 50 of 50 at each frame step (mean 1.33 % in
+        # loss and each run to 3 %, all but two of each frame step's 80 runs to 3 % of the model, and every run to 100
+        # internal steps (issue 25's targets; frictions 0.01-0.04 added with patch 0051, which brought the ISO anvils'
+        # runs at 0.01 to at most 100 steps). Measured within 3 % of the model: 50 of 50 at each frame step (mean 1.33 % in
         # each; 1.30 / 1.33 / 1.32 % before patch 0048); internal steps 76-85 at each. At 0.06 ms substeps
         # (the setting before): 50 of 50 within 3 % (mean 1.21 % in 1 ms frames), but 91-103 steps in 1 ms frames,
         # 89-106 at 1/60 s (the test ran on to the frame's end and a second frame, its spinning halves within the 1/60 s
@@ -151,11 +152,11 @@ class FrictionModelTest(unittest.TestCase):
         iso = ("--anvil-radius=0.001", "--anvil-taper=0.192")
         speeds = (5.1, 5.15, 5.2, 5.25, 5.3)
         frames = ("1e-4", "1e-3", str(1.0 / 60.0))
-        mus = (0.05, 0.1, 0.15, 0.2, 0.25)
+        mus = (0.01, 0.02, 0.04, 0.05, 0.1, 0.15, 0.2, 0.25)
 
         def coarse_of(frame):
             return ("--solver=direct", "--speculative-contacts", "--contact-substep=7e-5", "--free-step=5e-3", f"--dt={frame}")
-        # the 160 runs at once on every core (they are independent), then checked in order
+        # the 256 runs at once on every core (they are independent), then checked in order
         results = run_many([("--geometry=standard", *anvils, f"--friction={mu}", *converged) for anvils in ((), iso) for mu in mus]
                            + [("--geometry=standard", *anvils, f"--friction={mu}", f"--impact-speed={v}", *coarse_of(frame))
                               for frame in frames for anvils in ((), iso) for mu in mus for v in speeds])
@@ -184,7 +185,7 @@ class FrictionModelTest(unittest.TestCase):
                             self.assertLessEqual(r["steps"], 100, (mu, v, r["steps"]))
                         errors.sort()
                         self.assertLess(abs(errors[len(errors) // 2]), 0.02, (mu, errors))
-            self.assertGreaterEqual(sum(abs(e) < 0.03 for e in model_errors), 48, (frame, sorted(model_errors)))
+            self.assertGreaterEqual(sum(abs(e) < 0.03 for e in model_errors), len(model_errors) - 2, (frame, sorted(model_errors)))
 
     def test_high_friction_converges_at_coarser_substeps(self):
         # friction 0.25 with the sharp anvils at 80-120 us substeps: each run within 1 % of the converged loss (patch
@@ -209,9 +210,9 @@ class FrictionModelTest(unittest.TestCase):
         # Without friction the specimen rides over the anvils (the model's pass does not apply): issue 25's target is
         # the converged loss. 70 us substeps, the five speeds, both anvils, three frame steps. A part sliding on an
         # anvil without friction no longer holds the substep while its joint does not flow (the sharp anvils' runs took
-        # 103-106 internal steps at 1 ms frames, now at most 100 at each frame step); the ISO anvils' runs still take up
-        # to 107, 110 and 104 in 0.1 ms, 1 ms and 1/60 s frames (126 before), a half bouncing on a rounded edge during
-        # the fold (issue 25 left open), hence the bound of 110 there
+        # 103-106 internal steps at 1 ms frames); the ISO anvils' runs then still took up to 107, 110 and 104 in 0.1 ms,
+        # 1 ms and 1/60 s frames (126 before), a half bouncing on a rounded edge during the fold, until a capsule lying
+        # on a face touched it at both ends (patch 0051): now at most 100 at every frame step
         iso = ("--anvil-radius=0.001", "--anvil-taper=0.192")
         speeds = (5.1, 5.15, 5.2, 5.25, 5.3)
         frames = ("1e-4", "1e-3", str(1.0 / 60.0))
@@ -232,7 +233,7 @@ class FrictionModelTest(unittest.TestCase):
                     self.assertTrue(r["passed_anvils"], r)
                     self.assertLess(r["max_energy_gain_J"], 1e-4 * r["E0_J"], r)
                     self.assertLess(abs(r["energy_loss_J"] - reference) / reference, 0.05, (r["energy_loss_J"], reference))
-                    self.assertLessEqual(r["steps"], 110 if anvils else 100, r["steps"])
+                    self.assertLessEqual(r["steps"], 100, r["steps"])
 
     def test_the_thesis_flat_nose_jams_where_the_standard_striker_does_not(self):
         flat = run("--geometry=thesis", "--friction=0.1")
