@@ -649,26 +649,27 @@ void CharpyScene::internalStep(double h_s)
 	}
 	m_time_s += h_s;
 	m_internalSteps++;
+	trackAfterStep(h_s);
 	if (m_parameters.speculative_contacts)
 	{
-		// what nearContact holds the substep for, from this step: a joint flowed or holds elastic energy, or a part
-		// was pressed against an anvil through a contact with friction or at rest
-		double rotation = 0, elastic = 0;
+		// what nearContact holds the substep for, from this step: a joint flowed (the hinge motor's at its cap, as
+		// trackAfterStep books it) or holds elastic energy, or a part was pressed against an anvil through a contact
+		// with friction or at rest
+		double elastic = 0;
 		for (const plastic::Joint& joint : m_impl->joints)
 		{
-			rotation += joint.plasticRotation_rad();
 			elastic += joint.elasticEnergy_j();
 		}
+		const double rotation = plasticRotation_rad();
 		m_jointFlowed = rotation != m_jointRotation_rad;
 		// a frictionless contact whose part slides on it by more than 1 % of the speculative reach in a substep (what
 		// counts as touching, timeToTouch_s) no longer holds it; one at rest (the specimen lying on its supports) does
-		const double h = m_parameters.contact_substep_s;
-		const double slide_m_s = h > 0 ? 0.01 * speculativeReach_m() / h : std::numeric_limits<double>::infinity();
+		const double substep_s = m_parameters.contact_substep_s;
+		const double slide_m_s = substep_s > 0 ? 0.01 * speculativeReach_m() / substep_s : std::numeric_limits<double>::infinity();
 		m_holdSubstep = m_jointFlowed || elastic > 0 ||
 						plastic::pressedContact(*m_world->getDispatcher(), m_contactMovers, m_contactAnvils, slide_m_s);
 		m_jointRotation_rad = rotation;
 	}
-	trackAfterStep(h_s);
 }
 
 void CharpyScene::trackAfterStep(double h_s)
