@@ -337,16 +337,24 @@ TEST(SubstepPolicy, ABoxsTurnInASpinningOthersFrameCountsItsSecondOrder)
 	EXPECT_TRUE(plastic::mayTouchWithin({&cube}, {&wall}, 0.02, 1e-4, 3e-4));
 }
 
+// a world under gravity with Bullet's default collision configuration and sequential impulse
+struct GravityWorld
+{
+	btDefaultCollisionConfiguration configuration;
+	btCollisionDispatcher dispatcher{&configuration};
+	btDbvtBroadphase broadphase;
+	btSequentialImpulseConstraintSolver solver;
+	btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+	GravityWorld() { world.setGravity(btVector3(0, btScalar(-9.81), 0)); }
+};
+
 TEST(SubstepPolicy, AContactIsPressedWhileItCarriesAnImpulse)
 {
 	// a ball dropped onto a static floor, a static wall far away: in the air no contact of it is pressed; resting on
 	// the floor it is pressed against the floor and not against the wall
-	btDefaultCollisionConfiguration configuration;
-	btCollisionDispatcher dispatcher(&configuration);
-	btDbvtBroadphase broadphase;
-	btSequentialImpulseConstraintSolver solver;
-	btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
-	world.setGravity(btVector3(0, btScalar(-9.81), 0));
+	GravityWorld gravity;
+	btCollisionDispatcher& dispatcher = gravity.dispatcher;
+	btDiscreteDynamicsWorld& world = gravity.world;
 	btBoxShape slabShape(btVector3(1, btScalar(0.1), 1));
 	btTransform t;
 	t.setIdentity();
@@ -396,12 +404,9 @@ TEST(SubstepPolicy, AFrictionlessContactThatSlidesIsNotPressed)
 {
 	// two balls on two static slabs, one slab with friction 0: at rest both balls are pressed; sliding at 1 m/s the ball
 	// on the smooth slab is not (a frictionless force does no work along the slide), the one on the rough slab is
-	btDefaultCollisionConfiguration configuration;
-	btCollisionDispatcher dispatcher(&configuration);
-	btDbvtBroadphase broadphase;
-	btSequentialImpulseConstraintSolver solver;
-	btDiscreteDynamicsWorld world(&dispatcher, &broadphase, &solver, &configuration);
-	world.setGravity(btVector3(0, btScalar(-9.81), 0));
+	GravityWorld gravity;
+	btCollisionDispatcher& dispatcher = gravity.dispatcher;
+	btDiscreteDynamicsWorld& world = gravity.world;
 	btBoxShape slabShape(btVector3(1, btScalar(0.1), 1));
 	btSphereShape ballShape(btScalar(0.1));
 	btTransform t;
