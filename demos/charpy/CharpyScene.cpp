@@ -550,7 +550,7 @@ bool CharpyScene::nearContact(double horizon_s) const
 	// one 86 us step); both are known after each step (m_holdSubstep). A part pressed against an anvil without friction
 	// and sliding on it, its joint not flowing, is left to the speculative contacts as any other pair: after the fold a
 	// frictionless specimen rides over the anvils pressed on them, and held at the substep there it took up to 26
-	// substeps more (standard striker, 1 ms frames, 70 us substeps: 103-126 internal steps, now 72-110).
+	// substeps more (standard striker, 1 ms frames, 70 us substeps: 103-126 internal steps, 72-110 without them).
 	return m_holdSubstep ||
 		   plastic::mayTouchWithin(m_contactMovers, m_contactOthers, horizon_s, nearClearance_m(m_parameters), speculativeReach_m());
 }
