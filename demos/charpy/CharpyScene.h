@@ -135,8 +135,8 @@ private:
 
 	double m_time_s = 0;
 	// with speculative contacts: in the last step a joint flowed or held elastic energy, or a part was pressed against
-	// an anvil through a contact with friction or at rest; true before the first step, when no contact has told its load (the specimen lying on the anvils made
-	// 0.07-0.15 J in a first step of 0.5 ms)
+	// an anvil through a contact with friction or at rest; true before the first step, when no contact has told its
+	// load (the specimen lying on the anvils made 0.07-0.15 J in a first step of 0.5 ms)
 	bool m_holdSubstep = true;
 	bool m_jointFlowed = true;  // a joint flowed in the last internal step (with speculative contacts)
 	double m_jointRotation_rad = 0;  // the joints' plastic rotation after the last step

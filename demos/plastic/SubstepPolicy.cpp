@@ -20,6 +20,21 @@ const btRigidBody* movingBody(const btCollisionObject* object)
 	return object->isStaticObject() ? nullptr : btRigidBody::upcast(object);
 }
 
+// the velocity of a's material at the world point `at` against b's there (a null body is static)
+btVector3 pointVelocityAgainst(const btRigidBody* a, const btRigidBody* b, const btVector3& at)
+{
+	btVector3 velocity(0, 0, 0);
+	if (a)
+	{
+		velocity += a->getVelocityInLocalPoint(at - a->getCenterOfMassPosition());
+	}
+	if (b)
+	{
+		velocity -= b->getVelocityInLocalPoint(at - b->getCenterOfMassPosition());
+	}
+	return velocity;
+}
+
 bool overlap(const btVector3& aLo, const btVector3& aHi, const btVector3& bLo, const btVector3& bHi)
 {
 	return aLo.x() <= bHi.x() && bLo.x() <= aHi.x() && aLo.y() <= bHi.y() && bLo.y() <= aHi.y() && aLo.z() <= bHi.z() && bLo.z() <= aHi.z();
@@ -389,15 +404,7 @@ bool carriedImpulse(const btPersistentManifold& manifold, double frictionlessSli
 			return true;
 		}
 		const btVector3 at = (point.getPositionWorldOnA() + point.getPositionWorldOnB()) * btScalar(0.5);
-		btVector3 relative(0, 0, 0);
-		if (body0)
-		{
-			relative += body0->getVelocityInLocalPoint(at - body0->getCenterOfMassPosition());
-		}
-		if (body1)
-		{
-			relative -= body1->getVelocityInLocalPoint(at - body1->getCenterOfMassPosition());
-		}
+		const btVector3 relative = pointVelocityAgainst(body0, body1, at);
 		const btVector3 slide = relative - point.m_normalWorldOnB * relative.dot(point.m_normalWorldOnB);
 		if (!(double(slide.length()) > frictionlessSlide_m_s))
 		{
@@ -552,16 +559,7 @@ double timeToRelease_s(btDispatcher& dispatcher, const std::vector<const btColli
 			// where the last collision detection, at the step's start, found them: a step's slide behind)
 			const btVector3 world = other->getWorldTransform() * (boxIsA ? point.m_localPointB : point.m_localPointA);
 			const btVector3 local = box->getWorldTransform().invXform(world);
-			btVector3 velocity(0, 0, 0);
-			if (otherBody)
-			{
-				velocity += otherBody->getVelocityInLocalPoint(world - otherBody->getCenterOfMassPosition());
-			}
-			if (boxBody)
-			{
-				velocity -= boxBody->getVelocityInLocalPoint(world - boxBody->getCenterOfMassPosition());
-			}
-			const btVector3 slide = velocity * basis;  // in the box's frame
+			const btVector3 slide = pointVelocityAgainst(otherBody, boxBody, world) * basis;  // in the box's frame
 			// the face the point lies on: the box's axis nearest the contact's normal
 			const btVector3 normal = point.m_normalWorldOnB * basis;
 			int face = 0;
