@@ -1,0 +1,249 @@
+// Contact stepping (patch 0053, btDiscreteDynamicsWorld::setContactStepping): the world cuts its internal steps so
+// that no pair in or near contact moves more than a given distance in one, and leaves them whole otherwise.
+#include <gtest/gtest.h>
+
+#include <memory>
+#include <vector>
+
+#include "btBulletDynamicsCommon.h"
+
+namespace
+{
+constexpr double kFrame_s = 1.0 / 60.0;
+constexpr double kFloorTop_m = 0.01;   // a static floor 2 cm thick, its top at y = 1 cm
+constexpr double kRadius_m = 0.05;     // the falling sphere's
+// a speculative contact of the sphere reaches 1 mm (its bounding radius times gContactBreakingThreshold, 0.02)
+constexpr double kTravel_m = 5e-4;
+constexpr double kMinimumStep_s = 1e-5;
+
+// A sphere above a thin static floor, under gravity; collisions on, no deactivation.
+struct FloorWorld
+{
+	explicit FloorWorld(double height_m, double speed_m_s)
+		: dispatcher(&configuration), world(&dispatcher, &broadphase, &solver, &configuration)
+	{
+		world.setGravity(btVector3(0, btScalar(-9.81), 0));
+		btTransform t;
+		t.setIdentity();
+		floor = std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &floorShape));
+		world.addRigidBody(floor.get());
+		btVector3 inertia(0, 0, 0);
+		sphereShape.calculateLocalInertia(1, inertia);
+		btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &sphereShape, inertia);
+		t.setOrigin(btVector3(0, btScalar(height_m), 0));
+		info.m_startWorldTransform = t;
+		sphere = std::make_unique<btRigidBody>(info);
+		sphere->setActivationState(DISABLE_DEACTIVATION);
+		sphere->setLinearVelocity(btVector3(0, btScalar(-speed_m_s), 0));
+		world.addRigidBody(sphere.get());
+	}
+	~FloorWorld()
+	{
+		world.removeRigidBody(sphere.get());
+		world.removeRigidBody(floor.get());
+	}
+	double height_m() const { return sphere->getCenterOfMassPosition().y(); }
+
+	btDefaultCollisionConfiguration configuration;
+	btCollisionDispatcher dispatcher;
+	btDbvtBroadphase broadphase;
+	btSequentialImpulseConstraintSolver solver;
+	btDiscreteDynamicsWorld world;
+	btBoxShape floorShape{btVector3(1, btScalar(kFloorTop_m), 1)};
+	btSphereShape sphereShape{btScalar(kRadius_m)};
+	std::unique_ptr<btRigidBody> floor;
+	std::unique_ptr<btRigidBody> sphere;
+};
+
+// the length of each internal step, from the world's pre-tick callback
+std::vector<double>* gSteps = nullptr;
+void recordStep(btDynamicsWorld*, btScalar step_s) { gSteps->push_back(double(step_s)); }
+}  // namespace
+
+TEST(ContactStepping, OffByDefaultEachInternalStepIsWhole)
+{
+	FloorWorld w(0.25, 20);
+	EXPECT_EQ(w.world.getMaximumContactTravel(), btScalar(0));
+	w.world.stepSimulation(btScalar(kFrame_s), 0);
+	EXPECT_EQ(w.world.getNumInternalSteps(), 1);
+	// fixed internal steps: two of them
+	w.world.stepSimulation(btScalar(2 * kFrame_s), 10, btScalar(kFrame_s));
+	EXPECT_EQ(w.world.getNumInternalSteps(), 2);
+}
+
+// Whole 1/60 s steps move a sphere falling at 20 m/s 33 cm each, and a 2 cm floor is met between two of them: it
+// passes through. Cut near the floor, the step that meets it starts within the sphere's speculative contact, which
+// stops it on the floor's face.
+TEST(ContactStepping, AFastSphereStopsOnAThinFloorWhereWholeStepsLetItThrough)
+{
+	FloorWorld whole(0.25, 20);
+	for (int frame = 0; frame < 10; frame++) whole.world.stepSimulation(btScalar(kFrame_s), 0);
+	EXPECT_LT(whole.height_m(), -0.5) << "the sphere should fall through the floor in whole steps";
+
+	FloorWorld cut(0.25, 20);
+	cut.world.setContactStepping(btScalar(kTravel_m), btScalar(kMinimumStep_s));
+	int mostSteps = 0;
+	double deepest_m = 0;
+	for (int frame = 0; frame < 30; frame++)
+	{
+		cut.world.stepSimulation(btScalar(kFrame_s), 0);
+		mostSteps = std::max(mostSteps, cut.world.getNumInternalSteps());
+		deepest_m = std::max(deepest_m, kFloorTop_m + kRadius_m - cut.height_m());
+	}
+	EXPECT_NEAR(cut.height_m(), kFloorTop_m + kRadius_m, 1e-3) << "the sphere should rest on the floor";
+	EXPECT_LT(deepest_m, kTravel_m) << "no deeper than a step's travel";
+	EXPECT_LT(cut.sphere->getLinearVelocity().length(), 0.05);
+	EXPECT_GT(mostSteps, 1) << "the frame that meets the floor is cut";
+}
+
+// Far from any other object a body's steps are whole, and the world moves exactly as without contact stepping.
+TEST(ContactStepping, FarFromContactTheStepsAreWholeAndTheMotionTheSame)
+{
+	FloorWorld plain(100, 0);
+	FloorWorld cut(100, 0);
+	cut.world.setContactStepping(btScalar(kTravel_m), btScalar(kMinimumStep_s));
+	for (int frame = 0; frame < 20; frame++)
+	{
+		plain.world.stepSimulation(btScalar(kFrame_s), 0);
+		cut.world.stepSimulation(btScalar(kFrame_s), 0);
+		ASSERT_EQ(cut.world.getNumInternalSteps(), 1) << "frame " << frame;
+	}
+	EXPECT_EQ(cut.sphere->getCenterOfMassPosition().y(), plain.sphere->getCenterOfMassPosition().y());
+	EXPECT_EQ(cut.sphere->getLinearVelocity().y(), plain.sphere->getLinearVelocity().y());
+}
+
+// A sphere resting on the floor and a travel no step can keep: the steps are as short as allowed, equal, none shorter
+// than the minimum, and they add up to the frame.
+TEST(ContactStepping, NoStepIsShorterThanTheMinimumAndTheStepsAddUpToTheFrame)
+{
+	FloorWorld w(kFloorTop_m + kRadius_m, 0);
+	const double minimum_s = 1e-3;
+	w.world.setContactStepping(btScalar(1e-9), btScalar(minimum_s));
+	std::vector<double> steps;
+	gSteps = &steps;
+	w.world.setInternalTickCallback(recordStep, nullptr, true);
+	w.world.stepSimulation(btScalar(kFrame_s), 0);
+	w.world.setInternalTickCallback(nullptr, nullptr, true);
+	gSteps = nullptr;
+	ASSERT_EQ(int(steps.size()), w.world.getNumInternalSteps());
+	EXPECT_EQ(int(steps.size()), 16) << "1/60 s in steps of at least 1 ms";
+	double sum = 0;
+	for (double step : steps)
+	{
+		EXPECT_GE(step, minimum_s * (1 - 1e-6));
+		sum += step;
+	}
+	EXPECT_NEAR(sum, kFrame_s, 1e-7);
+}
+
+// Two spheres closing on each other at 30 m/s, 0.38 m apart: whole 1/60 s steps carry each past the other; cut by
+// their relative speed, they meet.
+TEST(ContactStepping, TwoBodiesClosingOnEachOtherAreCutByTheirRelativeSpeed)
+{
+	for (bool cut : {false, true})
+	{
+		FloorWorld w(100, 0);
+		w.world.setGravity(btVector3(0, 0, 0));
+		btSphereShape small(btScalar(0.01));
+		btVector3 inertia(0, 0, 0);
+		small.calculateLocalInertia(1, inertia);
+		btTransform t;
+		t.setIdentity();
+		std::vector<std::unique_ptr<btRigidBody>> balls;
+		for (double side : {-1.0, 1.0})
+		{
+			btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &small, inertia);
+			t.setOrigin(btVector3(btScalar(side * 0.2), 5, 0));
+			info.m_startWorldTransform = t;
+			balls.push_back(std::make_unique<btRigidBody>(info));
+			balls.back()->setActivationState(DISABLE_DEACTIVATION);
+			balls.back()->setLinearVelocity(btVector3(btScalar(-side * 15), 0, 0));
+			w.world.addRigidBody(balls.back().get());
+		}
+		if (cut) w.world.setContactStepping(btScalar(1e-4), btScalar(1e-6));
+		for (int frame = 0; frame < 3; frame++) w.world.stepSimulation(btScalar(kFrame_s), 0);
+		const bool passed = balls[0]->getCenterOfMassPosition().x() > balls[1]->getCenterOfMassPosition().x();
+		EXPECT_EQ(passed, !cut) << (cut ? "cut steps should let the spheres meet" : "whole steps should carry them past");
+		for (auto& ball : balls) w.world.removeRigidBody(ball.get());
+	}
+}
+
+// A static plane's box is unbounded: a sphere far above one is not near it, and its steps stay whole.
+TEST(ContactStepping, AStaticPlaneFarBelowDoesNotCutTheSteps)
+{
+	FloorWorld w(10, 5);
+	btStaticPlaneShape planeShape(btVector3(0, 1, 0), btScalar(-1));
+	btRigidBody plane(btRigidBody::btRigidBodyConstructionInfo(0, nullptr, &planeShape));
+	w.world.addRigidBody(&plane);
+	w.world.setContactStepping(btScalar(kTravel_m), btScalar(kMinimumStep_s));
+	int steps = 0;
+	for (int frame = 0; frame < 10; frame++)
+	{
+		w.world.stepSimulation(btScalar(kFrame_s), 0);
+		steps += w.world.getNumInternalSteps();
+	}
+	EXPECT_EQ(steps, 10) << "the sphere is metres above the plane";
+	w.world.removeRigidBody(&plane);
+}
+
+// An object without contact response (a sensor) holds no step: a sphere flying through one is not cut by it.
+TEST(ContactStepping, AnObjectWithoutContactResponseDoesNotCutTheSteps)
+{
+	FloorWorld w(10, 0);
+	w.world.setGravity(btVector3(0, 0, 0));
+	btBoxShape sensorShape(btVector3(2, 2, 2));
+	btCollisionObject sensor;
+	sensor.setCollisionShape(&sensorShape);
+	btTransform t;
+	t.setIdentity();
+	t.setOrigin(btVector3(0, 10, 0));
+	sensor.setWorldTransform(t);
+	sensor.setCollisionFlags(sensor.getCollisionFlags() | btCollisionObject::CF_NO_CONTACT_RESPONSE);
+	w.world.addCollisionObject(&sensor);
+	w.sphere->setLinearVelocity(btVector3(50, 0, 0));
+	w.world.setContactStepping(btScalar(kTravel_m), btScalar(kMinimumStep_s));
+	for (int frame = 0; frame < 3; frame++)
+	{
+		w.world.stepSimulation(btScalar(kFrame_s), 0);
+		EXPECT_EQ(w.world.getNumInternalSteps(), 1) << "frame " << frame;
+	}
+	w.world.removeCollisionObject(&sensor);
+}
+
+// With a travel larger than any pair moves every step is whole, and a pile of boxes falling on a floor moves bit for
+// bit as without contact stepping: the stepping reads the broadphase and does not change it.
+TEST(ContactStepping, WholeStepsOfABusySceneAreBitIdenticalToNoStepping)
+{
+	std::vector<double> positions[2];
+	for (int run = 0; run < 2; run++)
+	{
+		FloorWorld w(100, 0);
+		btBoxShape boxShape(btVector3(btScalar(0.1), btScalar(0.1), btScalar(0.1)));
+		btVector3 inertia(0, 0, 0);
+		boxShape.calculateLocalInertia(1, inertia);
+		std::vector<std::unique_ptr<btRigidBody>> boxes;
+		for (int i = 0; i < 60; i++)
+		{
+			btTransform t;
+			t.setIdentity();
+			t.setOrigin(btVector3(btScalar(0.05 * (i % 5) - 0.1), btScalar(0.2 + 0.25 * i), btScalar(0.03 * (i % 3))));
+			btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &boxShape, inertia);
+			info.m_startWorldTransform = t;
+			boxes.push_back(std::make_unique<btRigidBody>(info));
+			w.world.addRigidBody(boxes.back().get());
+		}
+		if (run == 1) w.world.setContactStepping(btScalar(100), btScalar(kMinimumStep_s));
+		for (int frame = 0; frame < 120; frame++)
+		{
+			w.world.stepSimulation(btScalar(kFrame_s), 0);
+			ASSERT_EQ(w.world.getNumInternalSteps(), 1);
+		}
+		for (auto& box : boxes)
+		{
+			for (int axis = 0; axis < 3; axis++) positions[run].push_back(box->getCenterOfMassPosition()[axis]);
+			w.world.removeRigidBody(box.get());
+		}
+	}
+	ASSERT_EQ(positions[0].size(), positions[1].size());
+	for (size_t i = 0; i < positions[0].size(); i++) ASSERT_EQ(positions[0][i], positions[1][i]) << "coordinate " << i;
+}
