@@ -44,11 +44,14 @@ FREE_SUBSTEP_S = [3e-5, 6e-5]
 # and those again with slow contacts stepped by their motion (--contact-travel, the speculative contacts' reach for
 # the halves): a piece longer than the substep in which the pairs in or near contact move at most 0.3 mm is one step
 FREE_TRAVEL_M = 3e-4
+# and without the runner's substeps, the world cutting its own steps where a pair in or near contact would move more
+# than the speculative contacts' reach for the halves (--world-contact-travel, patch 0053)
+WORLD_TRAVEL_M = 3e-4
 # each plastic method's converged run, the reference of the discretisation errors: direct solve, speculative contacts,
 # 2 us contact substeps (the loss moves by 0.1 % between 2 and 1 us; sequential impulse gives the same at 2 us)
 REFERENCE_SUBSTEP_S = 2e-6
 FIRST_COLUMNS = ("key", "method", "dt_ms", "auto_dt", "iterations", "contact_substep_s", "free_step_s", "contact_travel_m",
-                 "solver", "contacts", "reference")
+                 "world_contact_travel_m", "solver", "contacts", "reference")
 
 
 def configurations(quick=False):
@@ -59,7 +62,7 @@ def configurations(quick=False):
     substeps = [1e-5] if quick else CONTACT_SUBSTEP_S
     out = []
 
-    def add(method, it, sub, dt, solver, speculative=False, reference=False, free=0, travel=0):
+    def add(method, it, sub, dt, solver, speculative=False, reference=False, free=0, travel=0, world=0):
         flags = [f"--method={method}", f"--iterations={it}", f"--contact-substep={sub:g}"]
         flags.append("--auto-dt" if dt == "auto" else f"--dt={dt / 1000:.10g}")
         key = f"{method}/dt={dt}/it={it}/sub={sub:g}"
@@ -75,6 +78,9 @@ def configurations(quick=False):
         if travel:
             flags.append(f"--contact-travel={travel:g}")
             key += f"/travel={travel:g}"
+        if world:
+            flags.append(f"--world-contact-travel={world:g}")
+            key += f"/world={world:g}"
         if reference:
             key = f"{method}/reference"
         out.append({
@@ -86,6 +92,7 @@ def configurations(quick=False):
             "contact_substep_s": f"{sub:g}",
             "free_step_s": f"{free:g}" if free else "",
             "contact_travel_m": f"{travel:g}" if travel else "",
+            "world_contact_travel_m": f"{world:g}" if world else "",
             "solver": solver,
             "contacts": "speculative" if speculative else "",
             "reference": "1" if reference else "",
@@ -112,6 +119,8 @@ def configurations(quick=False):
             for dt in steps:
                 add(method, 10, sub, dt, "direct", speculative=True, free=FREE_STEP_S)
                 add(method, 10, sub, dt, "direct", speculative=True, free=FREE_STEP_S, travel=FREE_TRAVEL_M)
+        for dt in ([] if quick else steps + ["auto"]):
+            add(method, 10, 0, dt, "direct", speculative=True, world=WORLD_TRAVEL_M)
     return out
 
 

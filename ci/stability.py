@@ -70,6 +70,31 @@ CASES = {
                                        ["--solver=direct", "--speculative-contacts", "--dt=0.0166667", "--contact-substep=6e-5"]),
     "direct-spec-dt1ms-nosub": ("frame step 1 ms, no contact substeps, direct solver, speculative contacts",
                                 ["--solver=direct", "--speculative-contacts", "--dt=1e-3", "--contact-substep=0"]),
+    # no contact substeps of the runner's: the world cuts its own steps where a pair in or near contact would move more
+    # than the speculative reach (patch 0053, --world-contact-travel)
+    "world-dt1ms": ("frame step 1 ms, no contact substeps, the world's contact stepping (0.3 mm), direct solver, speculative contacts",
+                    ["--solver=direct", "--speculative-contacts", "--dt=1e-3", "--contact-substep=0", "--world-contact-travel=3e-4"]),
+    "world-dt16.7ms": ("frame step 1/60 s, no contact substeps, the world's contact stepping (0.3 mm), direct solver, speculative "
+                       "contacts",
+                       ["--solver=direct", "--speculative-contacts", "--dt=0.0166667", "--contact-substep=0", "--world-contact-travel=3e-4"]),
+    "world-dt1ms-parts32": ("32 parts, frame step 1 ms, no contact substeps, the world's contact stepping (0.14 mm, their reach), "
+                            "direct solver, speculative contacts",
+                            ["--solver=direct", "--speculative-contacts", "--dt=1e-3", "--contact-substep=0", "--world-contact-travel=1.4e-4",
+                             "--parts=32"]),
+    "world-dt16.7ms-parts32": ("32 parts, frame step 1/60 s, no contact substeps, the world's contact stepping (0.14 mm), direct "
+                               "solver, speculative contacts",
+                               ["--solver=direct", "--speculative-contacts", "--dt=0.0166667", "--contact-substep=0",
+                                "--world-contact-travel=1.4e-4", "--parts=32"]),
+    "world-dt16.7ms-it1": ("1 solver iteration, frame step 1/60 s, no contact substeps, the world's contact stepping (0.3 mm), direct "
+                           "solver, speculative contacts",
+                           ["--solver=direct", "--speculative-contacts", "--dt=0.0166667", "--contact-substep=0", "--world-contact-travel=3e-4",
+                            "--iterations=1"]),
+    "world-si-dt1ms": ("frame step 1 ms, no contact substeps, the world's contact stepping (0.3 mm), sequential impulse, speculative "
+                       "contacts",
+                       ["--speculative-contacts", "--dt=1e-3", "--contact-substep=0", "--world-contact-travel=3e-4"]),
+    "world-si-dt16.7ms": ("frame step 1/60 s, no contact substeps, the world's contact stepping (0.3 mm), sequential impulse, "
+                          "speculative contacts",
+                          ["--speculative-contacts", "--dt=0.0166667", "--contact-substep=0", "--world-contact-travel=3e-4"]),
     # issue 25's coarse setting: 0.03 ms contact substeps, frames gathered out of contact into steps of up to 5 ms
     "direct-spec-sub0.03ms-free-dt16.7ms": ("frame step 1/60 s, contact substep 0.03 ms, free step 5 ms, direct solver, speculative contacts",
                                             ["--solver=direct", "--speculative-contacts", "--dt=0.0166667", "--contact-substep=3e-5",
@@ -100,7 +125,7 @@ CONVERGED_TOLERANCE = 0.05  # a stable run's loss more than 5 % from the converg
 
 # cases that change only the numerics (step, substeps, parts, iterations, stiffness of rigid-plastic joints,
 # precision): the same specimen and impact, so the same converged loss as the default case
-NUMERIC_PREFIXES = ("dt", "parts", "it", "stiff-E", "double", "direct", "ccd")
+NUMERIC_PREFIXES = ("dt", "parts", "it", "stiff-E", "double", "direct", "ccd", "world")
 
 
 def reference_case(case):
@@ -137,7 +162,7 @@ def configurations(case_names, double_runner):
         what, flags = table[case]
         # the direct solver's cases are issue 25's cells: the plastic methods (a chain of 32 brittle joints takes it
         # 60-80 ms a step, which the matrix does not wait for); the CCD cases measure Bullet's CCD for the same methods
-        for method in (METHODS[4:] if case.startswith(("direct", "ccd")) else METHODS):
+        for method in (METHODS[4:] if case.startswith(("direct", "ccd", "world")) else METHODS):
             # the whole duration: a run may blow up after the specimen has passed the anvils
             c = {"key": f"{case}/{method}", "case": case, "method": method, "flags": [f"--method={method}", "--full-duration"] + flags}
             if case in DOUBLE_CASES:
@@ -245,6 +270,16 @@ def write_markdown(rows, case_names, path, command):
                   "The direct-spec-sub0.03ms-free cases are issue 25's coarse setting at 1/60 s frames: 0.03 ms contact",
                   "substeps, and out of contact frames gathered into steps of up to 5 ms (`--free-step`); the whole 60 ms",
                   "run takes 93 internal steps in two parts and 104-108 in 32 (`steps` in stability.csv)."]
+    world = [c for c in case_names if c.startswith("world-")]
+    if world:
+        steps = [int(r["steps"]) for r in rows if r["case"] in world and r.get("steps") not in (None, "")]
+        lines += ["", "Cases starting with world turn the runner's contact substeps off (`--contact-substep=0`) and have the",
+                  "world cut its own internal steps instead (`--world-contact-travel`, btDiscreteDynamicsWorld::",
+                  "setContactStepping, patch 0053): each frame is cut into steps within which no pair in or near contact",
+                  "moves more than the travel (by a bound of its relative speed; the forces of the step are not in it), here",
+                  "the speculative contacts' reach, so that they hold what closes in a step; far from contact the frame is",
+                  "one step. The runner's `--free-step`, touch and release steps are not used." + (f" They take {min(steps)}-{max(steps)} internal steps to the 60 ms end (`steps`" if steps else ""),
+                  "in stability.csv). Cases starting with world-si do so under sequential impulse."]
     inaccurate, stopped = [], []
     for r in rows:
         if r["method"] not in METHODS[4:]:

@@ -31,6 +31,10 @@ const scene::Flags<CharpyParameters>& valueFlags()
 									  "M  in/near contact, a step longer than the substep where the pairs there move at most this far "
 									  "in it (a stalled hammer, a specimen at rest), 0 = off (default); needs --speculative-contacts and "
 									  "--solver=direct; their reach, 3e-4, for the halves")},
+		{"world-contact-travel", numberFlag(&CharpyParameters::world_contact_travel_m,
+											"M  the world cuts each internal step into its own, within which no pair in or near "
+											"contact moves more than this (patch 0053; with --contact-substep=0, the world's steps "
+											"alone), 0 = off (default); the speculative reach, 3e-4, for the halves")},
 		{"ccd-motion-threshold", numberFlag(&CharpyParameters::ccd_motion_threshold_m,
 											"M  Bullet's CCD on the specimen's parts: sweep a part moving more than this in a step, 0 = off (default)")},
 		{"ccd-swept-radius", numberFlag(&CharpyParameters::ccd_swept_sphere_radius_m, "M  radius of the sphere Bullet's CCD sweeps, default 0")},

@@ -104,6 +104,10 @@ std::vector<std::string> validateCharpyParameters(const CharpyParameters& p)
 							 " needs --speculative-contacts and --solver=direct (or 0 = every step in contact is the substep)");
 		}
 	}
+	if (p.world_contact_travel_m != 0)
+	{
+		scene::requireRange(errors, "world-contact-travel", p.world_contact_travel_m, 1e-7, 1, "m (or 0 = off)");
+	}
 	if (p.ccd_motion_threshold_m != 0)
 	{
 		scene::requireRange(errors, "ccd-motion-threshold", p.ccd_motion_threshold_m, 1e-7, 1, "m (or 0 = off)");

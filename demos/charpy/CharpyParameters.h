@@ -62,6 +62,10 @@ struct CharpyParameters
 	                                     // (ContactSubstepSettings::contact_travel_m; a stalled hammer, a specimen at
 	                                     // rest); 0 = every such step is the substep. Needs speculative contacts
 	                                     // and the direct solve
+	double world_contact_travel_m = 0;   // the world cuts each internal step into its own, within which no pair in or
+	                                     // near contact moves more than this (btDiscreteDynamicsWorld::
+	                                     // setContactStepping, patch 0053; the speculative reach, 3e-4, for the
+	                                     // halves); 0 = off
 	int solver_iterations = 10;
 	// the constraint solver: upstream's sequential impulse (the thesis' runs), or btDirectJointSolver (patch 0019),
 	// which solves the specimen's joints and contacts together and keeps it whole at internal steps of 0.1 to 1 ms,

@@ -30,6 +30,8 @@ constexpr double kPoisson = 0.3;
 // loss of methods 5-8 in REPORT.md's sweep (576 runs), STABILITY.md or FRICTION.md moved by more than 0.5 %, and the
 // parts flying off after the fold, a millimetre from the nose and the anvils, no longer hold the world at the substep.
 constexpr double kNearClearanceWidths = 0.01;
+// the shortest internal step the world's contact stepping takes (--world-contact-travel) [s]
+constexpr double kMinimumWorldStep_s = 1e-6;
 
 double nearClearance_m(const CharpyParameters& p) { return kNearClearanceWidths * p.specimen_width_m; }
 
@@ -246,6 +248,10 @@ void CharpyScene::createWorld()
 	// (patch 0051): with GJK's one point a step the far end's point slid off, and the striker and an anvil held a half
 	// at opposite ends of its face and spun it off the anvil
 	m_world->getDispatchInfo().m_capsuleFaceLineContacts = m_parameters.speculative_contacts;
+	if (m_parameters.world_contact_travel_m > 0)
+	{
+		m_world->setContactStepping(btScalar(m_parameters.world_contact_travel_m), btScalar(kMinimumWorldStep_s));
+	}
 }
 
 void CharpyScene::createAnvils()
@@ -505,7 +511,15 @@ std::string CharpyScene::speculativeReachWarning() const
 	const double closing = m_impactSpeed_m_s * step;
 	std::string warning;
 	char text[320];
-	if (closing > reach)
+	if (p.world_contact_travel_m > reach)
+	{
+		std::snprintf(text, sizeof text,
+					  "the world's steps may let a pair move the %.3f mm world contact travel, more than the %.3f mm the "
+					  "speculative contacts reach; use --world-contact-travel of at most %.3g",
+					  1e3 * p.world_contact_travel_m, 1e3 * reach, reach);
+		warning = text;
+	}
+	else if (closing > reach && p.world_contact_travel_m == 0)
 	{
 		std::snprintf(text, sizeof text,
 					  "the hammer closes %.3f mm in a %.4g us internal step at %.2f m/s, more than the %.3f mm the speculative "
@@ -637,19 +651,34 @@ void CharpyScene::step()
 
 void CharpyScene::internalStep(double h_s)
 {
-	// the upstream methods' caps are impulses: they follow the internal step
 	const btScalar h = btScalar(h_s);
-	for (size_t i = 0; i < m_impl->joints.size(); i++)
+	if (m_parameters.world_contact_travel_m > 0)
 	{
-		plastic::updateJointForStep(*m_impl->joints[i].constraint, m_impl->specs[i], h_s);
+		// the world cuts the step into its own (patch 0053): each is set up and tracked by its tick callbacks
+		m_world->setInternalTickCallback(&CharpyScene::beforeWorldStep, this, true);
+		m_world->setInternalTickCallback(&CharpyScene::afterWorldStep, this, false);
+		{
+			SpecimenLengthScale scale(m_parameters.specimen_width_m);
+			m_world->stepSimulation(h, 0);
+		}
+		m_world->setInternalTickCallback(nullptr, nullptr, true);
+		m_world->setInternalTickCallback(nullptr, nullptr, false);
 	}
+	else
 	{
-		SpecimenLengthScale scale(m_parameters.specimen_width_m);
-		m_world->stepSimulation(h, 0);
+		// the upstream methods' caps are impulses: they follow the internal step
+		for (size_t i = 0; i < m_impl->joints.size(); i++)
+		{
+			plastic::updateJointForStep(*m_impl->joints[i].constraint, m_impl->specs[i], h_s);
+		}
+		{
+			SpecimenLengthScale scale(m_parameters.specimen_width_m);
+			m_world->stepSimulation(h, 0);
+		}
+		m_internalSteps++;
+		trackAfterStep(h_s);
 	}
 	m_time_s += h_s;
-	m_internalSteps++;
-	trackAfterStep(h_s);
 	if (m_parameters.speculative_contacts)
 	{
 		// what nearContact holds the substep for, from this step: a joint flowed (the hinge motor's at its cap, as
@@ -670,6 +699,22 @@ void CharpyScene::internalStep(double h_s)
 						plastic::pressedContact(*m_world->getDispatcher(), m_contactMovers, m_contactAnvils, slide_m_s);
 		m_jointRotation_rad = rotation;
 	}
+}
+
+void CharpyScene::beforeWorldStep(btDynamicsWorld* world, btScalar step_s)
+{
+	CharpyScene& scene = *static_cast<CharpyScene*>(world->getWorldUserInfo());
+	for (size_t i = 0; i < scene.m_impl->joints.size(); i++)
+	{
+		plastic::updateJointForStep(*scene.m_impl->joints[i].constraint, scene.m_impl->specs[i], double(step_s));
+	}
+}
+
+void CharpyScene::afterWorldStep(btDynamicsWorld* world, btScalar step_s)
+{
+	CharpyScene& scene = *static_cast<CharpyScene*>(world->getWorldUserInfo());
+	scene.m_internalSteps++;
+	scene.trackAfterStep(double(step_s));
 }
 
 void CharpyScene::trackAfterStep(double h_s)

@@ -14,6 +14,7 @@
 
 class btCollisionShape;
 class btDiscreteDynamicsWorld;
+class btDynamicsWorld;
 class btRigidBody;
 class btTypedConstraint;
 
@@ -117,6 +118,9 @@ private:
 	double fastestSpin_rad_s() const;  // of the specimen's parts
 	void internalStep(double h_s);
 	void trackAfterStep(double h_s);
+	// with the world's contact stepping, the work of each of its internal steps (its tick callbacks)
+	static void beforeWorldStep(btDynamicsWorld* world, btScalar step_s);
+	static void afterWorldStep(btDynamicsWorld* world, btScalar step_s);
 
 	CharpyParameters m_parameters;
 	bool m_endedClear = false;  // a frame ended at the internal step that left the specimen clear (step())
