@@ -651,32 +651,30 @@ void CharpyScene::step()
 
 void CharpyScene::internalStep(double h_s)
 {
-	const btScalar h = btScalar(h_s);
-	if (m_parameters.world_contact_travel_m > 0)
+	// with the world's contact stepping (patch 0053) the world cuts the step into its own, and its tick callbacks set
+	// up and track each of them
+	const bool worldSteps = m_parameters.world_contact_travel_m > 0;
+	if (worldSteps)
 	{
-		// the world cuts the step into its own (patch 0053): each is set up and tracked by its tick callbacks
 		m_world->setInternalTickCallback(&CharpyScene::beforeWorldStep, this, true);
 		m_world->setInternalTickCallback(&CharpyScene::afterWorldStep, this, false);
-		{
-			SpecimenLengthScale scale(m_parameters.specimen_width_m);
-			m_world->stepSimulation(h, 0);
-		}
+	}
+	else
+	{
+		prepareStep(h_s);
+	}
+	{
+		SpecimenLengthScale scale(m_parameters.specimen_width_m);
+		m_world->stepSimulation(btScalar(h_s), 0);
+	}
+	if (worldSteps)
+	{
 		m_world->setInternalTickCallback(nullptr, nullptr, true);
 		m_world->setInternalTickCallback(nullptr, nullptr, false);
 	}
 	else
 	{
-		// the upstream methods' caps are impulses: they follow the internal step
-		for (size_t i = 0; i < m_impl->joints.size(); i++)
-		{
-			plastic::updateJointForStep(*m_impl->joints[i].constraint, m_impl->specs[i], h_s);
-		}
-		{
-			SpecimenLengthScale scale(m_parameters.specimen_width_m);
-			m_world->stepSimulation(h, 0);
-		}
-		m_internalSteps++;
-		trackAfterStep(h_s);
+		finishStep(h_s);
 	}
 	m_time_s += h_s;
 	if (m_parameters.speculative_contacts)
@@ -701,20 +699,29 @@ void CharpyScene::internalStep(double h_s)
 	}
 }
 
+void CharpyScene::prepareStep(double step_s)
+{
+	// the upstream methods' caps are impulses: they follow the internal step
+	for (size_t i = 0; i < m_impl->joints.size(); i++)
+	{
+		plastic::updateJointForStep(*m_impl->joints[i].constraint, m_impl->specs[i], step_s);
+	}
+}
+
+void CharpyScene::finishStep(double step_s)
+{
+	m_internalSteps++;
+	trackAfterStep(step_s);
+}
+
 void CharpyScene::beforeWorldStep(btDynamicsWorld* world, btScalar step_s)
 {
-	CharpyScene& scene = *static_cast<CharpyScene*>(world->getWorldUserInfo());
-	for (size_t i = 0; i < scene.m_impl->joints.size(); i++)
-	{
-		plastic::updateJointForStep(*scene.m_impl->joints[i].constraint, scene.m_impl->specs[i], double(step_s));
-	}
+	static_cast<CharpyScene*>(world->getWorldUserInfo())->prepareStep(double(step_s));
 }
 
 void CharpyScene::afterWorldStep(btDynamicsWorld* world, btScalar step_s)
 {
-	CharpyScene& scene = *static_cast<CharpyScene*>(world->getWorldUserInfo());
-	scene.m_internalSteps++;
-	scene.trackAfterStep(double(step_s));
+	static_cast<CharpyScene*>(world->getWorldUserInfo())->finishStep(double(step_s));
 }
 
 void CharpyScene::trackAfterStep(double h_s)

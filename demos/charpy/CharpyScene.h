@@ -118,7 +118,9 @@ private:
 	double fastestSpin_rad_s() const;  // of the specimen's parts
 	void internalStep(double h_s);
 	void trackAfterStep(double h_s);
-	// with the world's contact stepping, the work of each of its internal steps (its tick callbacks)
+	void prepareStep(double step_s);  // before an internal step: the joints' caps for its length
+	void finishStep(double step_s);   // after it: counted and tracked
+	// with the world's contact stepping, the same for each of its internal steps (its tick callbacks)
 	static void beforeWorldStep(btDynamicsWorld* world, btScalar step_s);
 	static void afterWorldStep(btDynamicsWorld* world, btScalar step_s);
 
