@@ -508,8 +508,8 @@ TEST(CharpyDirectSolve, ElasticPlasticJointsAfterFineSubstepsBookNoWorkTheLossDi
 // passed (7.2 J). The world's contact stepping (patch 0053, --world-contact-travel at the speculative reach) cuts the
 // frame itself where a pair in or near contact would move more than that: measured 130.69 J in 125 internal steps at 1
 // ms and 127.03 J in 207 at 1/60 s against 129.24 J at 2 us substeps. 32 parts (their own converged run, 33 s, is
-// 130.41 J) scatter with the frame step, 129.9-134.5 J from 0.2 ms to 1/60 s (134.47 J at 1 ms, deepest contact 0.18
-// mm: the forces of a step, which the world's bound leaves out, push past the 0.14 mm travel).
+// 130.41 J) scatter with the frame step, 130.9-133.0 J from 0.2 ms to 1/60 s (132.96 J at 1 ms; at 1/60 s a contact
+// sinks 0.18 mm: the forces of a step, which the world's bound leaves out, push past the 0.14 mm travel).
 TEST(CharpyDirectSolve, TheWorldsContactSteppingHoldsTheSpecimenWithoutSubstepsWithinTwoPercentOfConvergedAndManyPartsWithinFive)
 {
 	CharpyParameters p = directSpeculative(false);

@@ -247,3 +247,41 @@ TEST(ContactStepping, WholeStepsOfABusySceneAreBitIdenticalToNoStepping)
 	ASSERT_EQ(positions[0].size(), positions[1].size());
 	for (size_t i = 0; i < positions[0].size(); i++) ASSERT_EQ(positions[0][i], positions[1][i]) << "coordinate " << i;
 }
+
+// Two spheres whose collision filters keep them apart (groups and masks, as the broadphase applies them) never touch:
+// closing on each other they do not cut the steps, where spheres that may collide do.
+TEST(ContactStepping, BodiesWhoseFiltersKeepThemApartDoNotCutTheSteps)
+{
+	for (bool filtered : {false, true})
+	{
+		FloorWorld w(100, 0);
+		w.world.setGravity(btVector3(0, 0, 0));
+		btSphereShape small(btScalar(0.01));
+		btVector3 inertia(0, 0, 0);
+		small.calculateLocalInertia(1, inertia);
+		std::vector<std::unique_ptr<btRigidBody>> balls;
+		for (int i = 0; i < 2; i++)
+		{
+			const double side = i == 0 ? -1.0 : 1.0;
+			btTransform t;
+			t.setIdentity();
+			t.setOrigin(btVector3(btScalar(side * 0.03), 5, 0));
+			btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &small, inertia);
+			info.m_startWorldTransform = t;
+			balls.push_back(std::make_unique<btRigidBody>(info));
+			balls.back()->setActivationState(DISABLE_DEACTIVATION);
+			balls.back()->setLinearVelocity(btVector3(btScalar(-side * 2), 0, 0));
+			// group 2 collides with 1 (the floor's default) only; group 4 with 1 only: the two never meet
+			const int group = filtered ? (i == 0 ? 2 : 4) : 1;
+			const int mask = filtered ? 1 : -1;
+			w.world.addRigidBody(balls.back().get(), group, mask);
+		}
+		w.world.setContactStepping(btScalar(1e-4), btScalar(1e-6));
+		w.world.stepSimulation(btScalar(kFrame_s), 0);
+		if (filtered)
+			EXPECT_EQ(w.world.getNumInternalSteps(), 1) << "filtered apart, the spheres cut no step";
+		else
+			EXPECT_GT(w.world.getNumInternalSteps(), 1) << "spheres that may collide cut the frame";
+		for (auto& ball : balls) w.world.removeRigidBody(ball.get());
+	}
+}
