@@ -39,10 +39,25 @@ struct FloorWorld
 	}
 	~FloorWorld()
 	{
+		for (auto& ball : balls) world.removeRigidBody(ball.get());
 		world.removeRigidBody(sphere.get());
 		world.removeRigidBody(floor.get());
 	}
 	double height_m() const { return sphere->getCenterOfMassPosition().y(); }
+	// a small sphere (1 cm radius, 1 kg) at (x, 5 m, 0) moving along x, in a collision filter group and mask
+	btRigidBody* addBall(double x_m, double speed_m_s, int group = 1, int mask = -1)
+	{
+		btVector3 inertia(0, 0, 0);
+		ballShape.calculateLocalInertia(1, inertia);
+		btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &ballShape, inertia);
+		info.m_startWorldTransform.setIdentity();
+		info.m_startWorldTransform.setOrigin(btVector3(btScalar(x_m), 5, 0));
+		balls.push_back(std::make_unique<btRigidBody>(info));
+		balls.back()->setActivationState(DISABLE_DEACTIVATION);
+		balls.back()->setLinearVelocity(btVector3(btScalar(speed_m_s), 0, 0));
+		world.addRigidBody(balls.back().get(), group, mask);
+		return balls.back().get();
+	}
 
 	btDefaultCollisionConfiguration configuration;
 	btCollisionDispatcher dispatcher;
@@ -53,6 +68,8 @@ struct FloorWorld
 	btSphereShape sphereShape{btScalar(kRadius_m)};
 	std::unique_ptr<btRigidBody> floor;
 	std::unique_ptr<btRigidBody> sphere;
+	btSphereShape ballShape{btScalar(0.01)};
+	std::vector<std::unique_ptr<btRigidBody>> balls;
 };
 
 // the length of each internal step, from the world's pre-tick callback
@@ -144,27 +161,12 @@ TEST(ContactStepping, TwoBodiesClosingOnEachOtherAreCutByTheirRelativeSpeed)
 	{
 		FloorWorld w(100, 0);
 		w.world.setGravity(btVector3(0, 0, 0));
-		btSphereShape small(btScalar(0.01));
-		btVector3 inertia(0, 0, 0);
-		small.calculateLocalInertia(1, inertia);
-		btTransform t;
-		t.setIdentity();
-		std::vector<std::unique_ptr<btRigidBody>> balls;
-		for (double side : {-1.0, 1.0})
-		{
-			btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &small, inertia);
-			t.setOrigin(btVector3(btScalar(side * 0.2), 5, 0));
-			info.m_startWorldTransform = t;
-			balls.push_back(std::make_unique<btRigidBody>(info));
-			balls.back()->setActivationState(DISABLE_DEACTIVATION);
-			balls.back()->setLinearVelocity(btVector3(btScalar(-side * 15), 0, 0));
-			w.world.addRigidBody(balls.back().get());
-		}
+		btRigidBody* left = w.addBall(-0.2, 15);
+		btRigidBody* right = w.addBall(0.2, -15);
 		if (cut) w.world.setContactStepping(btScalar(1e-4), btScalar(1e-6));
 		for (int frame = 0; frame < 3; frame++) w.world.stepSimulation(btScalar(kFrame_s), 0);
-		const bool passed = balls[0]->getCenterOfMassPosition().x() > balls[1]->getCenterOfMassPosition().x();
+		const bool passed = left->getCenterOfMassPosition().x() > right->getCenterOfMassPosition().x();
 		EXPECT_EQ(passed, !cut) << (cut ? "cut steps should let the spheres meet" : "whole steps should carry them past");
-		for (auto& ball : balls) w.world.removeRigidBody(ball.get());
 	}
 }
 
@@ -256,32 +258,14 @@ TEST(ContactStepping, BodiesWhoseFiltersKeepThemApartDoNotCutTheSteps)
 	{
 		FloorWorld w(100, 0);
 		w.world.setGravity(btVector3(0, 0, 0));
-		btSphereShape small(btScalar(0.01));
-		btVector3 inertia(0, 0, 0);
-		small.calculateLocalInertia(1, inertia);
-		std::vector<std::unique_ptr<btRigidBody>> balls;
-		for (int i = 0; i < 2; i++)
-		{
-			const double side = i == 0 ? -1.0 : 1.0;
-			btTransform t;
-			t.setIdentity();
-			t.setOrigin(btVector3(btScalar(side * 0.03), 5, 0));
-			btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &small, inertia);
-			info.m_startWorldTransform = t;
-			balls.push_back(std::make_unique<btRigidBody>(info));
-			balls.back()->setActivationState(DISABLE_DEACTIVATION);
-			balls.back()->setLinearVelocity(btVector3(btScalar(-side * 2), 0, 0));
-			// group 2 collides with 1 (the floor's default) only; group 4 with 1 only: the two never meet
-			const int group = filtered ? (i == 0 ? 2 : 4) : 1;
-			const int mask = filtered ? 1 : -1;
-			w.world.addRigidBody(balls.back().get(), group, mask);
-		}
+		// groups 2 and 4 each collide with group 1 (the floor's default) only: the two never meet
+		w.addBall(-0.03, 2, filtered ? 2 : 1, filtered ? 1 : -1);
+		w.addBall(0.03, -2, filtered ? 4 : 1, filtered ? 1 : -1);
 		w.world.setContactStepping(btScalar(1e-4), btScalar(1e-6));
 		w.world.stepSimulation(btScalar(kFrame_s), 0);
 		if (filtered)
 			EXPECT_EQ(w.world.getNumInternalSteps(), 1) << "filtered apart, the spheres cut no step";
 		else
 			EXPECT_GT(w.world.getNumInternalSteps(), 1) << "spheres that may collide cut the frame";
-		for (auto& ball : balls) w.world.removeRigidBody(ball.get());
 	}
 }
