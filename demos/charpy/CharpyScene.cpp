@@ -250,7 +250,10 @@ void CharpyScene::createWorld()
 	m_world->getDispatchInfo().m_capsuleFaceLineContacts = m_parameters.speculative_contacts;
 	if (m_parameters.world_contact_travel_m > 0)
 	{
+		// the world cuts each step into its own (patch 0053), and its tick callbacks set up and track each of them
 		m_world->setContactStepping(btScalar(m_parameters.world_contact_travel_m), btScalar(kMinimumWorldStep_s));
+		m_world->setInternalTickCallback(&CharpyScene::beforeWorldStep, this, true);
+		m_world->setInternalTickCallback(&CharpyScene::afterWorldStep, this, false);
 	}
 }
 
@@ -651,15 +654,9 @@ void CharpyScene::step()
 
 void CharpyScene::internalStep(double h_s)
 {
-	// with the world's contact stepping (patch 0053) the world cuts the step into its own, and its tick callbacks set
-	// up and track each of them
+	// with the world's contact stepping its tick callbacks (createWorld) set up and track each of its own steps
 	const bool worldSteps = m_parameters.world_contact_travel_m > 0;
-	if (worldSteps)
-	{
-		m_world->setInternalTickCallback(&CharpyScene::beforeWorldStep, this, true);
-		m_world->setInternalTickCallback(&CharpyScene::afterWorldStep, this, false);
-	}
-	else
+	if (!worldSteps)
 	{
 		prepareStep(h_s);
 	}
@@ -667,12 +664,7 @@ void CharpyScene::internalStep(double h_s)
 		SpecimenLengthScale scale(m_parameters.specimen_width_m);
 		m_world->stepSimulation(btScalar(h_s), 0);
 	}
-	if (worldSteps)
-	{
-		m_world->setInternalTickCallback(nullptr, nullptr, true);
-		m_world->setInternalTickCallback(nullptr, nullptr, false);
-	}
-	else
+	if (!worldSteps)
 	{
 		finishStep(h_s);
 	}
