@@ -2,6 +2,8 @@
 // that no pair in or near contact moves more than a given distance in one, and leaves them whole otherwise.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -267,5 +269,82 @@ TEST(ContactStepping, BodiesWhoseFiltersKeepThemApartDoNotCutTheSteps)
 			EXPECT_EQ(w.world.getNumInternalSteps(), 1) << "filtered apart, the spheres cut no step";
 		else
 			EXPECT_GT(w.world.getNumInternalSteps(), 1) << "spheres that may collide cut the frame";
+	}
+}
+
+namespace
+{
+// A 10 cm box (1 kg) over the floor's top at a gap, moving at a velocity and turned about z, no gravity.
+struct BoxOverFloor
+{
+	BoxOverFloor(double gap_m, const btVector3& velocity_m_s, double turn_rad = 0) : w(100, 0)
+	{
+		w.world.setGravity(btVector3(0, 0, 0));
+		btVector3 inertia(0, 0, 0);
+		shape.calculateLocalInertia(1, inertia);
+		btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &shape, inertia);
+		info.m_startWorldTransform.setIdentity();
+		info.m_startWorldTransform.setRotation(btQuaternion(btVector3(0, 0, 1), btScalar(turn_rad)));
+		// the turned box's lowest corner gap_m above the floor
+		const double reach_m = 0.05 * (std::cos(turn_rad) + std::sin(std::fabs(turn_rad)));
+		info.m_startWorldTransform.setOrigin(btVector3(-0.5, btScalar(kFloorTop_m + reach_m + gap_m), 0));
+		box = std::make_unique<btRigidBody>(info);
+		box->setActivationState(DISABLE_DEACTIVATION);
+		box->setLinearVelocity(velocity_m_s);
+		w.world.addRigidBody(box.get());
+	}
+	~BoxOverFloor() { w.world.removeRigidBody(box.get()); }
+	// the lowest point of the box below the floor's top (negative: above it)
+	double depth_m() const
+	{
+		btVector3 lo, hi;
+		box->getAabb(lo, hi);
+		return kFloorTop_m - lo.y();
+	}
+
+	FloorWorld w;
+	btBoxShape shape{btVector3(btScalar(0.05), btScalar(0.05), btScalar(0.05))};
+	std::unique_ptr<btRigidBody> box;
+};
+}  // namespace
+
+// A box sliding at 10 m/s along the floor 0.2 mm above it does not close on it: along the floor's normal the gap does
+// not shrink, so its steps stay whole. A bound of its speed alone (the gap and the travel, 0.7 mm, at 10 m/s: 70 us)
+// would cut each 1/60 s frame into hundreds.
+TEST(ContactStepping, ABoxSlidingAlongAFaceWithoutClosingOnItKeepsWholeSteps)
+{
+	BoxOverFloor b(2e-4, btVector3(10, 0, 0));
+	b.w.world.setContactStepping(btScalar(kTravel_m), btScalar(kMinimumStep_s));
+	for (int frame = 0; frame < 5; frame++)
+	{
+		b.w.world.stepSimulation(btScalar(kFrame_s), 0);
+		EXPECT_EQ(b.w.world.getNumInternalSteps(), 1) << "frame " << frame;
+	}
+	EXPECT_NEAR(b.box->getLinearVelocity().x(), 10, 1e-6);
+}
+
+// Boxes turned 0 and 0.3 rad falling on the 2 cm floor at 20 m/s: whole 1/60 s steps carry them through it, the
+// stepping along the floor's axes stops them on it, no deeper than the travel.
+TEST(ContactStepping, AFastBoxStopsOnAThinFloorNoDeeperThanTheTravel)
+{
+	for (double turn : {0.0, 0.3})
+	{
+		BoxOverFloor whole(0.2, btVector3(0, -20, 0), turn);
+		for (int frame = 0; frame < 10; frame++) whole.w.world.stepSimulation(btScalar(kFrame_s), 0);
+		EXPECT_GT(whole.depth_m(), 0.5) << turn << " rad: whole steps should carry the box through the floor";
+
+		BoxOverFloor cut(0.2, btVector3(0, -20, 0), turn);
+		cut.w.world.setContactStepping(btScalar(kTravel_m), btScalar(kMinimumStep_s));
+		double deepest_m = 0;
+		int steps = 0;
+		for (int frame = 0; frame < 30; frame++)
+		{
+			cut.w.world.stepSimulation(btScalar(kFrame_s), 0);
+			steps += cut.w.world.getNumInternalSteps();
+			deepest_m = std::max(deepest_m, cut.depth_m());
+		}
+		EXPECT_LT(deepest_m, kTravel_m) << turn << " rad";
+		EXPECT_LT(cut.depth_m(), kTravel_m) << turn << " rad: the box should rest on the floor";
+		EXPECT_GT(steps, 30) << turn << " rad: the frames that meet the floor are cut";
 	}
 }
