@@ -47,11 +47,15 @@ FREE_TRAVEL_M = 3e-4
 # and without the runner's substeps, the world cutting its own steps where a pair in or near contact would move more
 # than the speculative contacts' reach for the halves (--world-contact-travel, patch 0053)
 WORLD_TRAVEL_M = 3e-4
+# and again with frames shorter than 1/60 s gathered into the world's fixed 1/60 s steps (--world-step: upstream's
+# fixed-step stepSimulation, the world lagging the frames by less than a step), which the world cuts by its contacts:
+# the steps a test takes then no longer grow with the frame rate
+WORLD_STEP_S = 1.0 / 60.0
 # each plastic method's converged run, the reference of the discretisation errors: direct solve, speculative contacts,
 # 2 us contact substeps (the loss moves by 0.1 % between 2 and 1 us; sequential impulse gives the same at 2 us)
 REFERENCE_SUBSTEP_S = 2e-6
 FIRST_COLUMNS = ("key", "method", "dt_ms", "auto_dt", "iterations", "contact_substep_s", "free_step_s", "contact_travel_m",
-                 "world_contact_travel_m", "solver", "contacts", "reference")
+                 "world_contact_travel_m", "world_step_s", "solver", "contacts", "reference")
 
 
 def configurations(quick=False):
@@ -62,7 +66,7 @@ def configurations(quick=False):
     substeps = [1e-5] if quick else CONTACT_SUBSTEP_S
     out = []
 
-    def add(method, it, sub, dt, solver, speculative=False, reference=False, free=0, travel=0, world=0):
+    def add(method, it, sub, dt, solver, speculative=False, reference=False, free=0, travel=0, world=0, world_step=0):
         flags = [f"--method={method}", f"--iterations={it}", f"--contact-substep={sub:g}"]
         flags.append("--auto-dt" if dt == "auto" else f"--dt={dt / 1000:.10g}")
         key = f"{method}/dt={dt}/it={it}/sub={sub:g}"
@@ -81,6 +85,9 @@ def configurations(quick=False):
         if world:
             flags.append(f"--world-contact-travel={world:g}")
             key += f"/world={world:g}"
+        if world_step:
+            flags.append(f"--world-step={world_step:.10g}")
+            key += f"/wstep={world_step:.6g}"
         if reference:
             key = f"{method}/reference"
         out.append({
@@ -93,6 +100,7 @@ def configurations(quick=False):
             "free_step_s": f"{free:g}" if free else "",
             "contact_travel_m": f"{travel:g}" if travel else "",
             "world_contact_travel_m": f"{world:g}" if world else "",
+            "world_step_s": f"{world_step:.6g}" if world_step else "",
             "solver": solver,
             "contacts": "speculative" if speculative else "",
             "reference": "1" if reference else "",
@@ -121,6 +129,8 @@ def configurations(quick=False):
                 add(method, 10, sub, dt, "direct", speculative=True, free=FREE_STEP_S, travel=FREE_TRAVEL_M)
         for dt in ([] if quick else steps + ["auto"]):
             add(method, 10, 0, dt, "direct", speculative=True, world=WORLD_TRAVEL_M)
+        for dt in ([] if quick else [s for s in steps if s < WORLD_STEP_S * 1000 - 0.05]):
+            add(method, 10, 0, dt, "direct", speculative=True, world=WORLD_TRAVEL_M, world_step=WORLD_STEP_S)
     return out
 
 

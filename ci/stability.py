@@ -81,6 +81,10 @@ CASES = {
                             "direct solver, speculative contacts",
                             ["--solver=direct", "--speculative-contacts", "--dt=1e-3", "--contact-substep=0", "--world-contact-travel=1.4e-4",
                              "--parts=32"]),
+    "world-dt0.1ms-step16.7ms": ("frame step 0.1 ms gathered into the world's fixed 1/60 s steps, no contact substeps, the world's "
+                                 "contact stepping (0.3 mm), direct solver, speculative contacts",
+                                 ["--solver=direct", "--speculative-contacts", "--dt=1e-4", "--contact-substep=0",
+                                  "--world-contact-travel=3e-4", "--world-step=0.0166667"]),
     "world-dt16.7ms-parts32": ("32 parts, frame step 1/60 s, no contact substeps, the world's contact stepping (0.14 mm), direct "
                                "solver, speculative contacts",
                                ["--solver=direct", "--speculative-contacts", "--dt=0.0166667", "--contact-substep=0",
@@ -276,9 +280,12 @@ def write_markdown(rows, case_names, path, command):
         lines += ["", "Cases starting with world turn the runner's contact substeps off (`--contact-substep=0`) and have the",
                   "world cut its own internal steps instead (`--world-contact-travel`, btDiscreteDynamicsWorld::",
                   "setContactStepping, patch 0053): each frame is cut into steps within which no pair in or near contact",
-                  "moves more than the travel (by a bound of its relative speed; the forces of the step are not in it), here",
-                  "the speculative contacts' reach, so that they hold what closes in a step; far from contact the frame is",
-                  "one step. The runner's `--free-step`, touch and release steps are not used." + (f" They take {min(steps)}-{max(steps)} internal steps to the 60 ms end (`steps`" if steps else ""),
+                  "moves more than the travel (by a bound of its relative motion: a compound's children one by one, the",
+                  "points of one near the other, the closing along their boxes' axes, their contacts' normals and their",
+                  "nearest direction; the forces of the step are not in it but for the spin a body lost in the last two steps),",
+                  "here the speculative contacts' reach, so that they hold what closes in a step; far from contact the frame is",
+                  "one step; `--world-step` gathers short frames into the world's fixed steps (upstream's fixed-step",
+                  "`stepSimulation`). The runner's `--free-step`, touch and release steps are not used." + (f" They take {min(steps)}-{max(steps)} internal steps to the 60 ms end (`steps`" if steps else ""),
                   "in stability.csv). Cases starting with world-si do so under sequential impulse."]
     inaccurate, stopped = [], []
     for r in rows:

@@ -35,6 +35,10 @@ const scene::Flags<CharpyParameters>& valueFlags()
 											"M  the world cuts each internal step into its own, within which no pair in or near "
 											"contact moves more than this (patch 0053; with --contact-substep=0, the world's steps "
 											"alone), 0 = off (default); the speculative reach, 3e-4, for the halves")},
+		{"world-step", numberFlag(&CharpyParameters::world_step_s,
+								  "SECONDS  with --world-contact-travel, the world's fixed step (stepSimulation's fixedTimeStep): "
+								  "shorter frames are gathered into it, the world lagging them by less, and the world cuts it by "
+								  "its contacts; 0 = each frame is one step (default)")},
 		{"ccd-motion-threshold", numberFlag(&CharpyParameters::ccd_motion_threshold_m,
 											"M  Bullet's CCD on the specimen's parts: sweep a part moving more than this in a step, 0 = off (default)")},
 		{"ccd-swept-radius", numberFlag(&CharpyParameters::ccd_swept_sphere_radius_m, "M  radius of the sphere Bullet's CCD sweeps, default 0")},

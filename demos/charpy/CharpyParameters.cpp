@@ -108,6 +108,15 @@ std::vector<std::string> validateCharpyParameters(const CharpyParameters& p)
 	{
 		scene::requireRange(errors, "world-contact-travel", p.world_contact_travel_m, 1e-7, 1, "m (or 0 = off)");
 	}
+	if (p.world_step_s != 0)
+	{
+		scene::requireRange(errors, "world-step", p.world_step_s, 1e-6, 1, "s (or 0 = each frame is one step)");
+		if (p.world_contact_travel_m == 0)
+		{
+			errors.push_back("world-step: " + scene::jsonNumber(p.world_step_s) +
+							 " needs --world-contact-travel (or 0 = each frame is one step)");
+		}
+	}
 	if (p.ccd_motion_threshold_m != 0)
 	{
 		scene::requireRange(errors, "ccd-motion-threshold", p.ccd_motion_threshold_m, 1e-7, 1, "m (or 0 = off)");

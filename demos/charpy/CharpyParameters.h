@@ -66,6 +66,10 @@ struct CharpyParameters
 	                                     // near contact moves more than this (btDiscreteDynamicsWorld::
 	                                     // setContactStepping, patch 0053; the speculative reach, 3e-4, for the
 	                                     // halves); 0 = off
+	double world_step_s = 0;             // with the world's contact stepping, stepSimulation's fixed step: frames
+	                                     // shorter than it are gathered into one (the world lags them by less than it,
+	                                     // as upstream's fixed-step stepping does), longer ones cut into it, and the
+	                                     // world cuts each such step by its contacts; 0 = each frame is one step
 	int solver_iterations = 10;
 	// the constraint solver: upstream's sequential impulse (the thesis' runs), or btDirectJointSolver (patch 0019),
 	// which solves the specimen's joints and contacts together and keeps it whole at internal steps of 0.1 to 1 ms,

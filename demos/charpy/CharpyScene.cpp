@@ -662,7 +662,16 @@ void CharpyScene::internalStep(double h_s)
 	}
 	{
 		SpecimenLengthScale scale(m_parameters.specimen_width_m);
-		m_world->stepSimulation(btScalar(h_s), 0);
+		if (worldSteps && m_parameters.world_step_s > 0)
+		{
+			// upstream's fixed-step stepping: the frame and what the world owes of earlier ones in whole steps
+			const int maxSteps = int(std::ceil(h_s / m_parameters.world_step_s)) + 1;
+			m_world->stepSimulation(btScalar(h_s), maxSteps, btScalar(m_parameters.world_step_s));
+		}
+		else
+		{
+			m_world->stepSimulation(btScalar(h_s), 0);
+		}
 	}
 	if (!worldSteps)
 	{

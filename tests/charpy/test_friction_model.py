@@ -187,6 +187,40 @@ class FrictionModelTest(unittest.TestCase):
                         self.assertLess(abs(errors[len(errors) // 2]), 0.02, (mu, errors))
             self.assertGreaterEqual(sum(abs(e) < 0.03 for e in model_errors), len(model_errors) - 2, (frame, sorted(model_errors)))
 
+    def test_the_worlds_contact_stepping_matches_the_model_in_at_most_100_steps(self):
+        # issue 25 in the library: no runner substeps, the world cuts its own steps (patch 0053,
+        # btDiscreteDynamicsWorld::setContactStepping at the speculative reach) with the direct solve and speculative
+        # contacts; 1 ms and 1/60 s frames, and 0.1 ms frames gathered into the world's fixed 1/60 s steps (upstream's
+        # fixed-step stepSimulation), at two impact speeds. Measured over friction 0.02-0.25 and five speeds, 5.1-5.3
+        # m/s (120 runs): 68-89 internal steps and -0.3 to +1.4 % from the model with the sharp anvils, 67-96 steps and
+        # +0.3 to +2.9 % with the ISO anvils (their converged run is itself +2.7 % from the model at friction 0.25: the
+        # ISO seam). Before the bound took the children of a compound, the points of one near the other, the closing
+        # along their boxes' axes and the spin a body lost in the last steps, these runs took 132-557 steps at 5.2 m/s;
+        # without the lost spin 5 of the 120 were 3.1-5.8 % from the model (the fold braked to rest within a step, the
+        # next step long, the contacts turning it again within it).
+        iso = ("--anvil-radius=0.001", "--anvil-taper=0.192")
+        world = ("--solver=direct", "--speculative-contacts", "--contact-substep=0", "--world-contact-travel=3e-4")
+        frames = (("--dt=1e-4", "--world-step=0.0166667"), ("--dt=1e-3",), (f"--dt={1.0 / 60.0}",))
+        mus = (0.02, 0.05, 0.1, 0.25)
+        speeds = (5.1, 5.3)
+        cases = [(anvils, mu, v, frame) for anvils in ((), iso) for mu in mus for v in speeds for frame in frames]
+        results = run_many([("--geometry=standard", *anvils, f"--friction={mu}", f"--impact-speed={v}", *world, *frame)
+                            for anvils, mu, v, frame in cases])
+        model_errors = []
+        for anvils, mu, v, frame in cases:
+            with self.subTest(anvils=anvils, mu=mu, v=v, frame=frame):
+                expected, lock = CharpyFrictionModel(**dict(STANDARD, anvil_radius_m=0.001 if anvils else 0.0)).loss(mu)
+                self.assertIsNone(lock)
+                r = results[("--geometry=standard", *anvils, f"--friction={mu}", f"--impact-speed={v}", *world, *frame)]
+                self.assertTrue(r["passed_anvils"] and not r["over_the_top"] and not r["tunnelled"], r)
+                self.assertLess(r["max_energy_gain_J"], 1e-4 * r["E0_J"], r)
+                self.assertLess(r["max_booked_excess_J"], 1e-3 * r["E0_J"], r)
+                self.assertLess(r["max_penetration_m"], 3e-4, r)
+                self.assertLessEqual(r["steps"], 100, r)
+                model_errors.append((r["energy_loss_J"] - expected) / expected)
+                self.assertLess(abs(model_errors[-1]), 0.035, (mu, v, frame, r["energy_loss_J"], expected))
+        self.assertGreaterEqual(sum(abs(e) < 0.03 for e in model_errors), len(model_errors) - 2, sorted(model_errors))
+
     def test_high_friction_converges_at_coarser_substeps(self):
         # friction 0.25 with the sharp anvils at 80-120 us substeps: each run within 1 % of the converged loss (patch
         # 0050). Before it the cone shares of a half's contacts cycled to the iteration cap and the step kept whichever
