@@ -5,7 +5,9 @@
 # the test preset's label filter, and so are two long Charpy runs by name (a many-part specimen with and without
 # speculative contacts at fine steps, 104 s under the sanitizers, and the stalled hammer stepped by its contacts'
 # travel, 35 s: their code is run under the sanitizers by the shorter many-part and compound-children tests and by the
-# substep policy's travel tests; both run in the test suite). Part of ci/test.sh; about 6 minutes on 2 cores.
+# substep policy's travel tests; both run in the test suite), and the friction model's runner runs
+# (charpy.friction_matches_the_rigid_plastic_model, 94 s under the sanitizers: the standard striker's runs of the code
+# the Charpy gtests run). Part of ci/test.sh; about 6 minutes on 2 cores.
 # Extra arguments go to ctest, e.g. -L physics.
 set -euo pipefail
 cd "$(dirname "$0")/.."
