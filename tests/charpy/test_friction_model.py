@@ -192,8 +192,8 @@ class FrictionModelTest(unittest.TestCase):
         # btDiscreteDynamicsWorld::setContactStepping at the speculative reach) with the direct solve and speculative
         # contacts; 1 ms and 1/60 s frames, and 0.1 ms frames gathered into the world's fixed 1/60 s steps (upstream's
         # fixed-step stepSimulation), at two impact speeds. Measured over friction 0.02-0.25 and five speeds, 5.1-5.3
-        # m/s (120 runs): 68-89 internal steps and -0.3 to +1.4 % from the model with the sharp anvils, 67-96 steps and
-        # +0.3 to +2.9 % with the ISO anvils (their converged run is itself +2.7 % from the model at friction 0.25: the
+        # m/s (120 runs): 70-90 internal steps and -0.3 to +1.6 % from the model with the sharp anvils, 67-87 steps and
+        # +0.3 to +3.1 % with the ISO anvils (their converged run is itself +2.7 % from the model at friction 0.25: the
         # ISO seam). Before the bound took the children of a compound, the points of one near the other, the closing
         # along their boxes' axes and the spin a body lost in the last steps, these runs took 132-557 steps at 5.2 m/s;
         # without the lost spin 5 of the 120 were 3.1-5.8 % from the model (the fold braked to rest within a step, the
