@@ -306,6 +306,15 @@ class FrictionModelTest(unittest.TestCase):
             run = next(r for r in rows if r["geometry"] == "standard" and r["settings"].endswith(f"travel 0.3 mm, {frame} frames"))
             self.assertEqual(cell.split(" / ")[0], f"{float(run['loss_J']):.2f}", (frame, line))
             self.assertEqual(cell.split(" / ")[1], run["steps"], (frame, line))
+        # and the table of the world's own steps shows the world's runs, each in its own frame step's column
+        table = markdown[markdown.index("## The standard striker in the world's own steps"):]
+        line = next(x for x in table.splitlines() if x.startswith("| standard | 0.10 |"))
+        cells = [c.strip() for c in line.strip("|").split("|")][2:]
+        self.assertEqual(len(cells), len(frames), line)
+        for frame, cell in zip(frames, cells):
+            run = next(r for r in rows if r["geometry"] == "standard" and r["settings"].endswith(f"world's steps 0.3 mm, {frame} frames"))
+            self.assertEqual(cell.split(" / ")[0], f"{float(run['loss_J']):.2f}", (frame, line))
+            self.assertEqual(cell.split(" / ")[1], run["steps"], (frame, line))
         for r in rows:
             self.assertIn(r["accuracy"], ("accurate", "did-not-pass", "over-the-top", "penetrated", "unstable"), r)
             self.assertGreater(float(r["end_time_s"]), 0, r)
