@@ -286,35 +286,21 @@ class FrictionModelTest(unittest.TestCase):
             with open(os.path.join(out, "FRICTION.md")) as f:
                 markdown = f.read()
         self.assertIn("direct, speculative, 0.06 ms", {r["settings"] for r in rows})
-        # the every-frame-step table shows each frame step's own run (the 0.1 ms runs' name ends with "1 ms frames": a
-        # suffix match showed them in the 1 ms column too)
-        table = markdown[markdown.index("## The standard striker at every frame step"):]
-        line = next(x for x in table.splitlines() if x.startswith("| standard | 0.10 |"))
-        cells = [c.strip() for c in line.strip("|").split("|")][2:]
-        frames = ("0.1 ms", "1 ms", "1/60 s")
-        self.assertEqual(len(cells), len(frames), line)
-        for frame, cell in zip(frames, cells):
-            run = next(r for r in rows if r["geometry"] == "standard" and r["settings"].endswith(f"free step 5 ms, {frame} frames"))
-            self.assertEqual(cell.split(" / ")[0], f"{float(run['loss_J']):.2f}", (frame, line))
-            self.assertEqual(cell.split(" / ")[1], run["steps"], (frame, line))
-        # and the table with the contact travel shows the travel's runs
-        table = markdown[markdown.index("### The same with slow contacts stepped by their motion"):]
-        line = next(x for x in table.splitlines() if x.startswith("| standard | 0.10 |"))
-        cells = [c.strip() for c in line.strip("|").split("|")][2:]
-        self.assertEqual(len(cells), len(frames), line)
-        for frame, cell in zip(frames, cells):
-            run = next(r for r in rows if r["geometry"] == "standard" and r["settings"].endswith(f"travel 0.3 mm, {frame} frames"))
-            self.assertEqual(cell.split(" / ")[0], f"{float(run['loss_J']):.2f}", (frame, line))
-            self.assertEqual(cell.split(" / ")[1], run["steps"], (frame, line))
-        # and the table of the world's own steps shows the world's runs, each in its own frame step's column
-        table = markdown[markdown.index("## The standard striker in the world's own steps"):]
-        line = next(x for x in table.splitlines() if x.startswith("| standard | 0.10 |"))
-        cells = [c.strip() for c in line.strip("|").split("|")][2:]
-        self.assertEqual(len(cells), len(frames), line)
-        for frame, cell in zip(frames, cells):
-            run = next(r for r in rows if r["geometry"] == "standard" and r["settings"].endswith(f"world's steps 0.3 mm, {frame} frames"))
-            self.assertEqual(cell.split(" / ")[0], f"{float(run['loss_J']):.2f}", (frame, line))
-            self.assertEqual(cell.split(" / ")[1], run["steps"], (frame, line))
+        # each frame-step table shows each frame step's own run in its column (the 0.1 ms runs' name ends with
+        # "1 ms frames": a suffix match showed them in the 1 ms column too): the gathered runs, those with the contact
+        # travel, and those in the world's own steps
+        for heading, suffix in (("## The standard striker at every frame step", "free step 5 ms, {} frames"),
+                                ("### The same with slow contacts stepped by their motion", "travel 0.3 mm, {} frames"),
+                                ("## The standard striker in the world's own steps", "world's steps 0.3 mm, {} frames")):
+            table = markdown[markdown.index(heading):]
+            line = next(x for x in table.splitlines() if x.startswith("| standard | 0.10 |"))
+            cells = [c.strip() for c in line.strip("|").split("|")][2:]
+            frames = ("0.1 ms", "1 ms", "1/60 s")
+            self.assertEqual(len(cells), len(frames), (heading, line))
+            for frame, cell in zip(frames, cells):
+                run = next(r for r in rows if r["geometry"] == "standard" and r["settings"].endswith(suffix.format(frame)))
+                self.assertEqual(cell.split(" / ")[0], f"{float(run['loss_J']):.2f}", (heading, frame, line))
+                self.assertEqual(cell.split(" / ")[1], run["steps"], (heading, frame, line))
         for r in rows:
             self.assertIn(r["accuracy"], ("accurate", "did-not-pass", "over-the-top", "penetrated", "unstable"), r)
             self.assertGreater(float(r["end_time_s"]), 0, r)
