@@ -143,9 +143,9 @@ def markdown(rows, command):
     def dev(r):
         return "-" if r["deviation_pct"] is None else f"{r['deviation_pct']:+.1f} %"
 
-    def frame_table(selected, frames, travel=False, name_of=None):
-        """per striker and mu, a cell per frame step: loss / internal steps / against the model"""
-        name_of = name_of or (lambda f: gathered_name(f, travel=travel))
+    def frame_table(selected, frames, name_of):
+        """per striker and mu, a cell per frame step (its runs' settings name_of(frame)): loss / internal steps / against
+        the model"""
         table = ["| striker | mu | " + " | ".join(f"{f} frames" for f in frames) + " |", "|---|---|" + "---|" * len(frames)]
         for geometry in [g for g in GEOMETRIES if any(r["geometry"] == g for r in selected)]:
             for mu in sorted({r["mu"] for r in selected if r["geometry"] == geometry}):
@@ -233,7 +233,7 @@ def markdown(rows, command):
             f"model, {within100(gathered)} within 100 internal steps. Friction 0 goes over the top, and friction 0.30 is",
             "past the issue's 0-0.25 (the default runs, with sequential impulse, end below the model there; above).",
             "",
-        ] + frame_table(gathered, frames, travel=False)
+        ] + frame_table(gathered, frames, gathered_name)
     if travelled:
         frames = [f for f in FRAME_STEPS_MS if any(r["settings"] == gathered_name(f, travel=True) for r in travelled)]
         steps = [r["steps"] for r in travelled]
@@ -250,7 +250,7 @@ def markdown(rows, command):
             f"within 100 internal steps; all runs {min(steps)}-{max(steps)} steps (without the travel, above:",
             f"{min(r['steps'] for r in gathered)}-{max(r['steps'] for r in gathered)}).",
             "",
-        ] + frame_table(travelled, frames, travel=True)
+        ] + frame_table(travelled, frames, lambda f: gathered_name(f, travel=True))
     if world:
         frames = [f for f in WORLD_FRAMES if any(r["settings"] == world_name(f) for r in world)]
         steps = [r["steps"] for r in world]
@@ -271,7 +271,7 @@ def markdown(rows, command):
             "bound takes only the speed of their near points (a pressed contact's normal may turn at an edge): more than",
             "100 steps at 1/60 s (issue 25 leaves it open; the runs end over the anvils' top, as the converged runs do).",
             "",
-        ] + frame_table(world, frames, name_of=world_name)
+        ] + frame_table(world, frames, world_name)
     return "\n".join(lines) + "\n"
 
 
