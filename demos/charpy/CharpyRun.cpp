@@ -41,7 +41,7 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	double maxBend = 0;
 	bool passed = false;
 	int historySteps = 0;
-	while (!scene.done() && !(parameters.end_when_clear && scene.clear()))
+	while (!scene.done() && !(parameters.end_when_clear && (scene.endedClear() || scene.clear())))
 	{
 		scene.step();
 		r.frames++;
@@ -64,25 +64,27 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 			*history << line;
 		}
 	}
-	r.end_time_s = scene.time_s();
-	r.kinetic_against_hammer_J = scene.kineticAgainstHammer_j();
+	// where the test ended (the world's steps may have run on to the frame's end; CharpyScene::endState)
+	const CharpyEndState end = scene.endState();
+	r.end_time_s = end.time_s;
+	r.kinetic_against_hammer_J = end.kinetic_against_hammer_j;
 	r.internal_steps = scene.internalSteps();
 	r.solver_fallbacks = scene.solverFallbacks();
 	r.finite = scene.finite();
-	r.E_end_J = scene.energies().total_j;
+	r.E_end_J = end.energies.total_j;
 	r.energy_loss_J = r.E0_J - r.E_end_J;
-	r.plastic_work_J = scene.plasticWork_j();
+	r.plastic_work_J = end.plastic_work_j;
 	r.other_loss_J = r.energy_loss_J - r.plastic_work_J;
 	r.error_pct = 100.0 * (r.energy_loss_J - r.analytic_J) / r.analytic_J;
-	r.plastic_rotation_rad = scene.plasticRotation_rad();
-	r.bend_angle_rad = scene.bendAngle_rad();
-	r.end_bend_angle_rad = scene.endToEndBend_rad();
+	r.plastic_rotation_rad = end.plastic_rotation_rad;
+	r.bend_angle_rad = end.bend_angle_rad;
+	r.end_bend_angle_rad = end.end_bend_angle_rad;
 	r.max_energy_gain_J = scene.maxEnergyGain_j();
 	r.max_booked_excess_J = scene.maxBookedExcess_j();
 	r.max_penetration_m = scene.maxPenetration_m();
 	r.max_speed_m_s = scene.maxSpeed_m_s();
 	r.max_distance_m = scene.maxDistance_m();
-	r.hammer_angle_end_rad = scene.hammerAngle_rad();
+	r.hammer_angle_end_rad = end.hammer_angle_rad;
 	r.broken = scene.broken();
 	r.passed_anvils = scene.passedAnvils();
 	r.over_the_top = scene.overTheTop();

@@ -635,7 +635,14 @@ void CharpyScene::step()
 	plastic::ContactSubstepPolicy::Done ended;
 	if (p.end_when_clear && !m_endedClear)
 	{
-		ended = [this] { return m_endedClear = clear(); };
+		ended = [this]
+		{
+			if (!m_endedClear && clear())
+			{
+				recordEnd();  // unless the world's own steps ended it within the frame (finishStep)
+			}
+			return m_endedClear;
+		};
 	}
 	// the frame that reaches the duration is stepped whole, not gathered with frames past it
 	const bool gather = m_time_s + m_substeps.owed_s() + frame < p.duration_s - 1e-12;
@@ -712,7 +719,38 @@ void CharpyScene::prepareStep(double step_s)
 void CharpyScene::finishStep(double step_s)
 {
 	m_internalSteps++;
+	m_steppedTime_s += step_s;
 	trackAfterStep(step_s);
+	// the world's own steps run to the frame's end: the test ends at the one that leaves the specimen clear, as the
+	// runner's substeps do (step())
+	if (m_parameters.world_contact_travel_m > 0 && m_parameters.end_when_clear && !m_endedClear && clear())
+	{
+		recordEnd();
+	}
+}
+
+void CharpyScene::recordEnd()
+{
+	m_endedClear = true;
+	m_endState = currentState();
+	// the world's state is at its own steps' time, which can lag the frames' (world_step_s)
+	m_endState.time_s = m_parameters.world_contact_travel_m > 0 ? m_steppedTime_s : m_time_s;
+}
+
+CharpyEndState CharpyScene::endState() const { return m_endedClear ? m_endState : currentState(); }
+
+CharpyEndState CharpyScene::currentState() const
+{
+	CharpyEndState state;
+	state.time_s = m_time_s;
+	state.energies = energies();
+	state.plastic_work_j = plasticWork_j();
+	state.plastic_rotation_rad = plasticRotation_rad();
+	state.bend_angle_rad = bendAngle_rad();
+	state.end_bend_angle_rad = endToEndBend_rad();
+	state.hammer_angle_rad = hammerAngle_rad();
+	state.kinetic_against_hammer_j = kineticAgainstHammer_j();
+	return state;
 }
 
 void CharpyScene::beforeWorldStep(btDynamicsWorld* world, btScalar step_s)

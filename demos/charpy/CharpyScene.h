@@ -26,6 +26,19 @@ struct CharpyEnergies
 	double total_j = 0;      // the sum of the three above
 };
 
+// The test's state where it ended (CharpyScene::endState)
+struct CharpyEndState
+{
+	double time_s = 0;  // simulated time of the world's state
+	CharpyEnergies energies;
+	double plastic_work_j = 0;
+	double plastic_rotation_rad = 0;
+	double bend_angle_rad = 0;
+	double end_bend_angle_rad = 0;
+	double hammer_angle_rad = 0;
+	double kinetic_against_hammer_j = 0;
+};
+
 class CharpyScene : public scene::SteppedScene
 {
 public:
@@ -84,6 +97,13 @@ public:
 	// hammer (kineticAgainstHammer_j).
 	bool clear() const;
 	static constexpr double kClearHorizon_s = 1e-3;
+	// with end_when_clear, the test ended at an internal step that left the specimen clear
+	bool endedClear() const { return m_endedClear; }
+	// The state at that internal step, or now if it has not ended so. The runner's own substeps stop there; the world's
+	// contact stepping (world_contact_travel_m) takes the frame whole, on to its end in steps as long as no pair near
+	// contact limits them, where a pendulum's hinge loses energy (a 12 m/s hammer 25 J in a 1/60 s frame of 5.8 ms
+	// steps): that is no part of the test, so its state is taken after the world's step that left it clear.
+	CharpyEndState endState() const;
 	// the parts' kinetic energy against the hammer, 1/2 sum m (plastic::relativeSpeedBound_m_s)^2 [J]: the most one
 	// collision of them with the hammer could dissipate now. A scale of what ending at clear() leaves out, not a bound
 	// over the rest of a run (gravity and the swing change the speeds, and they can meet again).
@@ -125,7 +145,11 @@ private:
 	static void afterWorldStep(btDynamicsWorld* world, btScalar step_s);
 
 	CharpyParameters m_parameters;
-	bool m_endedClear = false;  // a frame ended at the internal step that left the specimen clear (step())
+	bool m_endedClear = false;  // the test ended at the internal step that left the specimen clear (recordEnd)
+	CharpyEndState m_endState;  // the state there
+	double m_steppedTime_s = 0;  // the internal steps taken so far: the world's time (it can lag m_time_s)
+	void recordEnd();            // ends the test now: m_endedClear, m_endState
+	CharpyEndState currentState() const;
 	plastic::ContactSubstepPolicy m_substeps{plastic::ContactSubstepSettings{0}};  // the frame's internal steps
 	CharpySection m_section;
 	std::unique_ptr<Impl> m_impl;  // Bullet's world objects, shapes and bodies
