@@ -507,12 +507,12 @@ TEST(CharpyDirectSolve, ElasticPlasticJointsAfterFineSubstepsBookNoWorkTheLossDi
 // 3.7 mm into the anvils at 1 ms (145.2 J), and at 1/60 s the specimen was still in front of them when the hammer had
 // passed (7.2 J). The world's contact stepping (patch 0053, --world-contact-travel at the speculative reach) cuts the
 // frame itself where a pair in or near contact would move more than that, against 129.24 J at 2 us substeps: measured
-// 131.33 J in 85 internal steps at 1 ms and 129.83 J in 82 at 1/60 s; 0.1 ms frames gathered into the world's fixed
+// 131.20 J in 85 internal steps at 1 ms and 129.67 J in 84 at 1/60 s; 0.1 ms frames gathered into the world's fixed
 // 1/60 s steps (--world-step, upstream's fixed-step stepSimulation) take the 1/60 s frames' steps (each 0.1 ms frame
 // a step of its own took 100: the test's frames). Before the bound took a compound's children, the points of one near
 // the other, the closing along the boxes' axes and the spin a body lost: 125 and 207 steps. 32 parts (their own
-// converged run, 33 s, is 130.41 J): 132.43 J in 103 steps at 1 ms (192 before the closer look, 120 before the bound's
-// frame terms were cross products and its search took geometric means).
+// converged run, 33 s, is 130.41 J): 131.51 J in 102 steps at 1 ms (192 before the closer look, 120 before the step
+// search took geometric means).
 TEST(CharpyDirectSolve, TheWorldsContactSteppingHoldsTheSpecimenWithinTwoPercentOfConvergedInAHundredStepsAndManyPartsWithinFive)
 {
 	CharpyParameters p = directSpeculative(false);
