@@ -18,6 +18,9 @@ struct CharpyResult
 	bool box_edges_across_faces = false;  // whether the world clips edges across faces (box_edges_across_faces or speculative_contacts)
 	long frames = 0;
 	long internal_steps = 0;
+	// of those, the ones up to the end of the test (the step that left the specimen clear): fewer where the world's
+	// contact stepping stepped on to the frame's end after it
+	long test_steps = 0;
 	double kinetic_against_hammer_J = 0;  // CharpyScene::kineticAgainstHammer_j at the end
 	double end_time_s = 0;  // simulated time at the end: the duration, or when the specimen was clear (end_when_clear)
 	double wall_s = 0;

@@ -743,6 +743,7 @@ CharpyEndState CharpyScene::currentState() const
 {
 	CharpyEndState state;
 	state.time_s = m_time_s;
+	state.internal_steps = m_internalSteps;
 	state.energies = energies();
 	state.plastic_work_j = plasticWork_j();
 	state.plastic_rotation_rad = plasticRotation_rad();

@@ -30,6 +30,7 @@ struct CharpyEnergies
 struct CharpyEndState
 {
 	double time_s = 0;  // simulated time of the world's state
+	long internal_steps = 0;  // taken up to it
 	CharpyEnergies energies;
 	double plastic_work_j = 0;
 	double plastic_rotation_rad = 0;
