@@ -578,3 +578,45 @@ TEST(CharpyDirectSolve, AWorldSteppedFrameReadsTheTestWhereTheSpecimenWasClearNo
 	const CharpyResult whole = runCharpy(p);  // read at the frame's end: the hammer's long steps are in it
 	EXPECT_GT(whole.energy_loss_J, frame.energy_loss_J + 5.0) << toJson(whole);
 }
+
+// Issue 25's targets for the standard striker in the world's own steps (no substeps, the world's contact travel at the
+// speculative reach): frictionless and at friction 0.1, sharp and ISO anvils, at 0.1 ms frames gathered into the world's
+// 1/60 s steps, 1 ms and 1/60 s frames, the test in at most 100 internal steps and within 5 % of the direct solve's
+// own run at 10 us substeps. The frictionless runs go over the anvils' top as their converged runs do. Measured: 61-91
+// steps to the test's end; frictionless 137 and 131 steps at 1/60 s before the step search took geometric means.
+TEST(CharpyDirectSolve, TheStandardStrikerInTheWorldsOwnStepsTakesAtMostAHundredStepsWithAndWithoutFriction)
+{
+	for (double friction : {0.0, 0.1})
+	{
+		for (bool iso : {false, true})
+		{
+			CharpyParameters p = directSpeculative(true);
+			p.friction = friction;
+			if (iso)
+			{
+				p.anvil_radius_m = 0.001;
+				p.anvil_taper_rad = 0.192;
+			}
+			p.dt_s = 1e-4;
+			const CharpyResult converged = runCharpy(p);
+			for (double frame : {1e-4, 1e-3, 1.0 / 60})
+			{
+				CharpyParameters world = p;
+				world.dt_s = frame;
+				world.contact_substep_s = 0;
+				world.world_contact_travel_m = 3e-4;
+				if (frame < 1e-3) world.world_step_s = 1.0 / 60;
+				const CharpyResult r = runCharpy(world);
+				std::ostringstream where;
+				where << "friction " << friction << (iso ? ", ISO anvils, " : ", sharp anvils, ") << frame << " s frames\n"
+					  << toJson(r) << "\n"
+					  << toJson(converged);
+				EXPECT_EQ(classifyCharpyRun(r), CharpyVerdict::Stable) << where.str();
+				EXPECT_EQ(r.over_the_top, converged.over_the_top) << where.str();
+				EXPECT_LE(r.test_steps, 100) << where.str();
+				EXPECT_NEAR(r.energy_loss_J, converged.energy_loss_J, 0.05 * converged.energy_loss_J) << where.str();
+				EXPECT_LT(r.max_booked_excess_J, 0.001 * r.E0_J) << where.str();
+			}
+		}
+	}
+}
