@@ -45,12 +45,14 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	{
 		scene.step();
 		r.frames++;
-		if (!scene.broken()) maxBend = std::max(maxBend, scene.endToEndBend_rad());  // folded while whole
+		// the frame's end, or where the test ended within it (the world's own steps run on to the frame's end)
+		const CharpyEndState state = scene.endState();
+		if (!state.broken) maxBend = std::max(maxBend, state.end_bend_angle_rad);  // folded while whole
 		if (!passed && scene.passedAnvils())
 		{
 			passed = true;
-			r.pass_end_bend_angle_rad = scene.endToEndBend_rad();
-			r.pass_plastic_rotation_rad = scene.plasticRotation_rad();
+			r.pass_end_bend_angle_rad = state.end_bend_angle_rad;
+			r.pass_plastic_rotation_rad = state.plastic_rotation_rad;
 		}
 		// a row per frame that moved the world: a frame shorter than a contact substep may step nothing (the world
 		// owes it to the next frame), and a row that repeats its time would say time stood still
@@ -86,7 +88,7 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	r.max_speed_m_s = scene.maxSpeed_m_s();
 	r.max_distance_m = scene.maxDistance_m();
 	r.hammer_angle_end_rad = end.hammer_angle_rad;
-	r.broken = scene.broken();
+	r.broken = end.broken;
 	r.passed_anvils = scene.passedAnvils();
 	r.over_the_top = scene.overTheTop();
 	// Folded at mid-span into a V, the specimen fits between the anvils only once its halves span less than the gap:

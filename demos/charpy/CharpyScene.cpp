@@ -751,6 +751,7 @@ CharpyEndState CharpyScene::currentState() const
 	state.end_bend_angle_rad = endToEndBend_rad();
 	state.hammer_angle_rad = hammerAngle_rad();
 	state.kinetic_against_hammer_j = kineticAgainstHammer_j();
+	state.broken = broken();
 	return state;
 }
 

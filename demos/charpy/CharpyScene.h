@@ -38,6 +38,7 @@ struct CharpyEndState
 	double end_bend_angle_rad = 0;
 	double hammer_angle_rad = 0;
 	double kinetic_against_hammer_j = 0;
+	bool broken = false;
 };
 
 class CharpyScene : public scene::SteppedScene
