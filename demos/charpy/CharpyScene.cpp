@@ -635,14 +635,7 @@ void CharpyScene::step()
 	plastic::ContactSubstepPolicy::Done ended;
 	if (p.end_when_clear && !m_endedClear)
 	{
-		ended = [this]
-		{
-			if (!m_endedClear && clear())
-			{
-				recordEnd();  // unless the world's own steps ended it within the frame (finishStep)
-			}
-			return m_endedClear;
-		};
+		ended = [this] { return m_endedClear; };  // asked after every internal step (finishStep)
 	}
 	// the frame that reaches the duration is stepped whole, not gathered with frames past it
 	const bool gather = m_time_s + m_substeps.owed_s() + frame < p.duration_s - 1e-12;
@@ -721,9 +714,9 @@ void CharpyScene::finishStep(double step_s)
 	m_internalSteps++;
 	m_steppedTime_s += step_s;
 	trackAfterStep(step_s);
-	// the world's own steps run to the frame's end: the test ends at the one that leaves the specimen clear, as the
-	// runner's substeps do (step())
-	if (m_parameters.world_contact_travel_m > 0 && m_parameters.end_when_clear && !m_endedClear && clear())
+	// the test ends at the internal step that leaves the specimen clear: the runner's substeps stop there (step()),
+	// the world's own steps run on to the frame's end
+	if (m_parameters.end_when_clear && !m_endedClear && clear())
 	{
 		recordEnd();
 	}
@@ -733,8 +726,9 @@ void CharpyScene::recordEnd()
 {
 	m_endedClear = true;
 	m_endState = currentState();
-	// the world's state is at its own steps' time, which can lag the frames' (world_step_s)
-	m_endState.time_s = m_parameters.world_contact_travel_m > 0 ? m_steppedTime_s : m_time_s;
+	// the world's state is at its own steps' time, which can lag the frames' (world_step_s); with the runner's substeps
+	// it is the frames' own (m_time_s, the same sum of the same steps, is advanced after this step)
+	m_endState.time_s = m_steppedTime_s;
 }
 
 CharpyEndState CharpyScene::endState() const { return m_endedClear ? m_endState : currentState(); }

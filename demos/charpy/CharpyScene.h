@@ -29,7 +29,7 @@ struct CharpyEnergies
 // The test's state where it ended (CharpyScene::endState)
 struct CharpyEndState
 {
-	double time_s = 0;  // simulated time of the world's state
+	double time_s = 0;  // simulated time: the world's own where the test ended within a frame, else the frames'
 	long internal_steps = 0;  // taken up to it
 	CharpyEnergies energies;
 	double plastic_work_j = 0;
