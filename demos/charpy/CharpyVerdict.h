@@ -10,7 +10,8 @@
 enum class CharpyVerdict
 {
 	NotFinite,   // a NaN or infinity in a body state
-	BlowUp,      // a body faster than max(100 m/s, 20 x impact speed) or farther than 20 m from the origin
+	BlowUp,      // a body faster than max(100 m/s, 20 x impact speed) or farther from the origin than that
+	             // speed carries it in the run's time (end_time_s), and than 20 m
 	EnergyGain,  // total energy, or total energy plus the plastic work booked, rose more than 1 % of E0 above E0
 	Tunnelling,  // the unbroken specimen got past the anvils bent less than it must be to fit the gap (through
 	             // them), or the hammer swung on past the specimen (more than 0.05 rad) losing less than 5 % of
