@@ -122,6 +122,21 @@ DOUBLE_CASES = {
     "double": ("default scene, BT_USE_DOUBLE_PRECISION build", []),
     "double-dt16.7ms": ("1/60 s, double precision", ["--dt=0.0166667"]),
 }
+# The new method on every case above: btDirectJointSolver, speculative contacts and the world's own contact steps
+# (patch 0053) instead of the runner's substeps, with one travel for every case, within the smallest speculative
+# reach of any of them (the 1.7 mm parts of parts32 reach 0.142 mm; the 2-part specimen 0.309 mm). The -nosub
+# cases are their plain cases here (no substeps either way), so they are left out.
+NEW_METHOD_FLAGS = ["--solver=direct", "--speculative-contacts", "--contact-substep=0", "--world-contact-travel=1.4e-4"]
+
+
+def new_method_cases(table):
+    return {f"new-{name}": (f"{what}; the new method", [f for f in flags if not f.startswith("--contact-substep")] + NEW_METHOD_FLAGS)
+            for name, (what, flags) in table.items()
+            if not name.startswith(("direct", "ccd", "world")) and not name.endswith("-nosub")}
+
+
+CASES.update(new_method_cases(CASES))
+DOUBLE_CASES.update(new_method_cases(DOUBLE_CASES))
 SYMBOLS = {"stable": "✓", "energy-gain": "↑E", "nan": "NaN", "blow-up": "✗", "tunnelling": "⇢", "came-apart": "⊘", "": "?"}
 ACCURACY_SYMBOLS = {"did-not-pass": "⊥", "over-the-top": "⊤", "penetrated": "◐"}
 CONVERGED_TOLERANCE = 0.05  # a stable run's loss more than 5 % from the converged (default) run of its method
@@ -133,11 +148,13 @@ NUMERIC_PREFIXES = ("dt", "parts", "it", "stiff-E", "double", "direct", "ccd", "
 
 
 def reference_case(case):
-    """The converged run a case is compared with: the default case in its precision; None for a case that
-    changes the physics (yield stress, speed, geometry), which has no converged run in the matrix."""
-    if not case.startswith(NUMERIC_PREFIXES):
+    """The converged run a case is compared with: the default case in its precision (the new method's cases: the new
+    method's default case); None for a case that changes the physics (yield stress, speed, geometry), which has no
+    converged run in the matrix."""
+    prefix = "new-" if case.startswith("new-") else ""
+    if not case[len(prefix):].startswith(NUMERIC_PREFIXES):
         return None
-    return "double" if case in DOUBLE_CASES else "default"
+    return prefix + ("double" if case in DOUBLE_CASES else "default")
 
 
 def accuracy(row, by_key):
@@ -166,7 +183,7 @@ def configurations(case_names, double_runner):
         what, flags = table[case]
         # the direct solver's cases are issue 25's cells: the plastic methods (a chain of 32 brittle joints takes it
         # 60-80 ms a step, which the matrix does not wait for); the CCD cases measure Bullet's CCD for the same methods
-        for method in (METHODS[4:] if case.startswith(("direct", "ccd", "world")) else METHODS):
+        for method in (METHODS[4:] if case.startswith(("direct", "ccd", "world", "new-")) else METHODS):
             # the whole duration: a run may blow up after the specimen has passed the anvils
             c = {"key": f"{case}/{method}", "case": case, "method": method, "flags": [f"--method={method}", "--full-duration"] + flags}
             if case in DOUBLE_CASES:
@@ -187,7 +204,7 @@ def write_markdown(rows, case_names, path, command):
         "Legend: ✓ stable · ↑E energy gain (total energy more than 1 % of E0 above E0, or, methods 6-8, the",
         "plastic work the joints booked more than 1 % of E0 beyond the energy lost at some time: flow no force",
         "paid for, `max_booked_excess_J`) · NaN NaN/inf ·",
-        "✗ blow-up (a body faster than max(100 m/s, 20 x impact speed) or farther than 20 m) ·",
+        "✗ blow-up (a body faster than max(100 m/s, 20 x impact speed), or farther than that speed carries it in the run and 20 m) ·",
         "⇢ tunnelling (a rigid specimen passed the anvils, or the hammer swung through losing < 5 % of Mp*theta_pass) ·",
         "⊘ came apart (methods 6-8: the unbroken specimen passed the anvils bent less than half of theta_pass end",
         "to end, with plastic work less than half of the energy lost: its joints let go in the solver).",
@@ -199,24 +216,57 @@ def write_markdown(rows, case_names, path, command):
         "| case | " + " | ".join(METHODS) + " |",
         "|---|" + "---|" * len(METHODS),
     ]
+    def cell(r):
+        if not r:
+            return ""
+        if r.get("failure"):
+            return "run failed"
+        marks, _ = accuracy(r, by_key)
+        return f"{SYMBOLS.get(r.get('verdict', ''), '?')}{marks} {float(r['energy_loss_J']):.0f}"
+
+    new_cases = [c for c in case_names if c.startswith("new-")]
     for case in case_names:
+        if case in new_cases:
+            continue
         what = (DOUBLE_CASES.get(case) or CASES[case])[0]
-        cells = []
-        for m in METHODS:
-            r = by_key.get(f"{case}/{m}")
-            if not r:
-                cells.append("")
-            elif r.get("failure"):
-                cells.append("run failed")
-            else:
-                loss = float(r["energy_loss_J"])
-                marks, _ = accuracy(r, by_key)
-                cells.append(f"{SYMBOLS.get(r.get('verdict', ''), '?')}{marks} {loss:.0f}")
-        lines.append(f"| {case}: {what} | " + " | ".join(cells) + " |")
+        lines.append(f"| {case}: {what} | " + " | ".join(cell(by_key.get(f"{case}/{m}")) for m in METHODS) + " |")
+    if new_cases:
+        new_rows = [by_key[f"{c}/{m}"] for c in new_cases for m in METHODS[5:] if f"{c}/{m}" in by_key]
+        held = [r for r in new_rows if not r.get("failure") and r.get("verdict") == "stable"
+                and accuracy(r, by_key)[0] in ("", "⊥") and (accuracy(r, by_key)[0] == "" or reference_case(r["case"]) is None)]
+        lines += ["", "## The new method on every case", "",
+                  "Each case above but the solver and contact variants (and the -nosub cases, which are their plain cases",
+                  f"here) run with `{' '.join(NEW_METHOD_FLAGS)}`: the specimen's joints",
+                  "and contacts in one direct solve (btDirectJointSolver, patch 0019), speculative contacts (patch 0036)",
+                  "and the world's own internal steps within which no pair in or near contact moves more than 0.14 mm",
+                  "(patch 0053) in place of the runner's contact substeps; one travel for every case, within the smallest",
+                  "reach of any (the 1.7 mm parts of parts32: 0.142 mm). ≠ is against this table's default case. Each cell:",
+                  "symbols and the energy loss in J; the last column the internal steps to the 60 ms end.",
+                  f"Methods 6-8: {len(held)} of {len(new_rows)} cells stable and accurate (⊥ only where the case changes",
+                  "the physics so that the hammer cannot break through: fy800, fy2000, v1, nohammer).", "",
+                  "| case | " + " | ".join(METHODS[4:]) + " | steps |", "|---|" + "---|" * (len(METHODS[4:]) + 1)]
+        for case in new_cases:
+            what = (DOUBLE_CASES.get(case) or CASES[case])[0].replace("; the new method", "")
+            steps = [int(r["steps"]) for m in METHODS[4:] for r in [by_key.get(f"{case}/{m}")]
+                     if r and r.get("steps") not in (None, "")]
+            span = (f"{min(steps)}" if min(steps) == max(steps) else f"{min(steps)}-{max(steps)}") if steps else ""
+            lines.append(f"| {case}: {what} | " + " | ".join(cell(by_key.get(f"{case}/{m}")) for m in METHODS[4:])
+                         + f" | {span} |")
     bad = [r for r in rows if r["method"] in NEW_METHODS and r.get("verdict") != "stable"]
     lines += ["", "## Cells where a new constraint (methods 6-8) is not stable", ""]
     if bad:
         lines += [f"- `{r['key']}`: {r.get('verdict', r.get('failure'))}: {r.get('verdict_reason', '')}" for r in bad]
+        # the same case and method under the new method (the -nosub and ccd cases: their plain case there)
+        def counterpart(r):
+            plain = r["case"][len("ccd-"):] if r["case"].startswith("ccd-") else r["case"]
+            plain = plain[:-len("-nosub")] if plain.endswith("-nosub") else plain
+            return by_key.get(f"new-{plain}/{r['method']}")
+        pairs = [(r, counterpart(r)) for r in bad if not r["case"].startswith("new-")]
+        held = [(r, n) for r, n in pairs if n and n.get("verdict") == "stable"]
+        if pairs:
+            lines += ["", f"The same case and method under the new method (the section above; a -nosub or ccd case as its plain case): "
+                      f"{len(held)} of {len(pairs)} stable"
+                      + (": " + "; ".join(f"`{n['key']}` {float(n['energy_loss_J']):.1f} J" for _, n in held) if held else "") + "."]
         if any(r["case"].endswith("-nosub") for r in bad):
             lines += ["", "Cases ending in -nosub are runs with the contact substeps switched off (`--contact-substep=0`):",
                       "the hammer's striker moves 4.4 mm (1 ms) or 74 mm (1/60 s) per step against a 10 mm specimen",
