@@ -99,7 +99,8 @@ CharpyCommandLine parseCharpyCommandLine(const std::vector<std::string>& argumen
 		if (scene::takeSwitch(flag,
 							  {{"help", &cl.help}, {"list-methods", &cl.listMethods}, {"json", &cl.json}, {"auto-dt", &cl.parameters.auto_dt},
 							   {"full-duration", &fullDuration}, {"speculative-contacts", &cl.parameters.speculative_contacts},
-							   {"box-edges-across-faces", &cl.parameters.box_edges_across_faces}},
+							   {"box-edges-across-faces", &cl.parameters.box_edges_across_faces},
+							   {"contact-turn-prediction", &cl.parameters.contact_turn_prediction}},
 							  cl.errors) ||
 			scene::takePath(flag, "history", cl.historyPath, cl.errors))
 			continue;
@@ -125,7 +126,7 @@ CharpyCommandLine parseCharpyCommandLine(const std::vector<std::string>& argumen
 std::string charpyUsage()
 {
 	std::string text =
-		"usage: charpy [--method=NAME] [--geometry=standard|thesis] [--json] [--history=FILE.csv] [--auto-dt] [--full-duration] [--speculative-contacts] [--box-edges-across-faces] [--list-methods] [flags]\n"
+		"usage: charpy [--method=NAME] [--geometry=standard|thesis] [--json] [--history=FILE.csv] [--auto-dt] [--full-duration] [--speculative-contacts] [--box-edges-across-faces] [--contact-turn-prediction] [--list-methods] [flags]\n"
 		"Runs the Charpy impact test scene headless and prints the energy balance. The test ends once the specimen is clear\n"
 		"(every part behind the anvils, none able to touch an anvil within a frame), or at --duration;\n"
 		"  --full-duration      runs to --duration even after the specimen is clear\n"
@@ -137,6 +138,8 @@ std::string charpyUsage()
 		"                       and to the time a part runs off a sharp anvil's edge, so the anvil holds it no longer\n"
 		"  --box-edges-across-faces  an edge of a box lying nearly across another's face touches it at both ends (patch 0042),\n"
 		"                       not at its deeper end alone as upstream has it (on with --speculative-contacts)\n"
+		"  --contact-turn-prediction  contact rows aim at the gap the bodies' turns leave at the step's end (patch 0055),\n"
+		"                       not at its linear prediction (on with --world-contact-travel)\n"
 		"  --geometry=thesis    (default) the thesis' scene: a flat striker nose as thick as the hammer, released from 2.8 rad\n"
 		"  --geometry=standard  the standard machine's striker (ISO 148-1): a 2 mm edge at mid-span, 5.2 m/s\n";
 	return text + scene::usageOf(valueFlags());

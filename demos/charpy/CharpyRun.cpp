@@ -23,6 +23,7 @@ CharpyResult runCharpy(const CharpyParameters& parameters, std::ostream* history
 	r.solver = plastic::solverKindName(parameters.solver);
 	r.speculative_contacts = parameters.speculative_contacts;
 	r.box_edges_across_faces = scene.world().getDispatchInfo().m_boxBoxEdgesAcrossFaces;  // as the world has it
+	r.contact_turn_prediction = scene.world().getSolverInfo().m_contactTurnPrediction;
 	r.E0_J = scene.initialEnergy_j();
 	r.analytic_J = scene.section().analytic_loss_j;
 	r.theta_pass_rad = scene.section().theta_pass_rad;
@@ -106,7 +107,7 @@ std::string toJson(const CharpyResult& r)
 	std::ostringstream out;
 	auto flag = [](bool b) { return b ? "true" : "false"; };
 	out << "{\"method\":\"" << r.method << "\",\"dt\":" << scene::jsonNumber(r.dt_s) << ",\"auto_dt\":" << flag(r.auto_dt)
-		<< ",\"iterations\":" << r.iterations << ",\"solver\":\"" << r.solver << "\",\"solver_fallbacks\":" << r.solver_fallbacks << ",\"speculative_contacts\":" << flag(r.speculative_contacts) << ",\"box_edges_across_faces\":" << flag(r.box_edges_across_faces) << ",\"steps\":" << r.internal_steps << ",\"test_steps\":" << r.test_steps << ",\"frames\":" << r.frames << ",\"end_time_s\":" << scene::jsonNumber(r.end_time_s) << ",\"kinetic_against_hammer_J\":" << scene::jsonNumber(r.kinetic_against_hammer_J)
+		<< ",\"iterations\":" << r.iterations << ",\"solver\":\"" << r.solver << "\",\"solver_fallbacks\":" << r.solver_fallbacks << ",\"speculative_contacts\":" << flag(r.speculative_contacts) << ",\"box_edges_across_faces\":" << flag(r.box_edges_across_faces) << ",\"contact_turn_prediction\":" << flag(r.contact_turn_prediction) << ",\"steps\":" << r.internal_steps << ",\"test_steps\":" << r.test_steps << ",\"frames\":" << r.frames << ",\"end_time_s\":" << scene::jsonNumber(r.end_time_s) << ",\"kinetic_against_hammer_J\":" << scene::jsonNumber(r.kinetic_against_hammer_J)
 		<< ",\"wall_s\":" << scene::jsonNumber(r.wall_s) << ",\"E0_J\":" << scene::jsonNumber(r.E0_J) << ",\"E_end_J\":" << scene::jsonNumber(r.E_end_J)
 		<< ",\"energy_loss_J\":" << scene::jsonNumber(r.energy_loss_J) << ",\"plastic_work_J\":" << scene::jsonNumber(r.plastic_work_J)
 		<< ",\"other_loss_J\":" << scene::jsonNumber(r.other_loss_J) << ",\"analytic_J\":" << scene::jsonNumber(r.analytic_J)

@@ -16,6 +16,7 @@ struct CharpyResult
 	int solver_fallbacks = 0;  // internal steps in which a direct or MLCP solver fell back to sequential impulse
 	bool speculative_contacts = false;  // the parameters' speculative_contacts
 	bool box_edges_across_faces = false;  // whether the world clips edges across faces (box_edges_across_faces or speculative_contacts)
+	bool contact_turn_prediction = false;  // whether the world's contact rows predict turns (contact_turn_prediction or world steps)
 	long frames = 0;
 	long internal_steps = 0;
 	// of those, the ones up to the end of the test (the step that left the specimen clear): fewer where the world's

@@ -248,6 +248,8 @@ void CharpyScene::createWorld()
 	// (patch 0051): with GJK's one point a step the far end's point slid off, and the striker and an anvil held a half
 	// at opposite ends of its face and spun it off the anvil
 	m_world->getDispatchInfo().m_capsuleFaceLineContacts = m_parameters.speculative_contacts;
+	// contact rows aim at the gap with the bodies' turns (patch 0055); setContactStepping turns it on too
+	m_world->getSolverInfo().m_contactTurnPrediction = m_parameters.contact_turn_prediction;
 	if (m_parameters.world_contact_travel_m > 0)
 	{
 		// the world cuts each step into its own (patch 0053), and its tick callbacks set up and track each of them

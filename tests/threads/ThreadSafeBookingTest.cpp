@@ -243,3 +243,64 @@ TEST(ThreadSafeBooking, ALongerStepsDriftIsCorrectedWithoutMomentumOnTheBatchedS
 	EXPECT_GT(without, 0.05) << "the control: the velocity bias kicks the pendulum";
 	EXPECT_LT(with, 1e-3);
 }
+
+namespace
+{
+// 400 boxes spinning and sliding onto a static floor (400 manifolds and more: the solver's batched, parallel contact
+// setup) with the world's contact stepping and so the contact rows' turn prediction; the boxes' positions at the end.
+std::vector<double> spinningBoxesOnAFloor(btITaskScheduler* scheduler, bool turnPrediction)
+{
+	btSetTaskScheduler(scheduler);
+	MtWorld mt;
+	btDiscreteDynamicsWorld& world = mt.world;
+	world.setGravity(btVector3(0, btScalar(-9.81), 0));
+	world.getSimulationIslandManager()->setSplitIslands(false);
+	btBoxShape floorShape(btVector3(50, 1, 50));
+	btRigidBody::btRigidBodyConstructionInfo floorInfo(0, nullptr, &floorShape);
+	floorInfo.m_startWorldTransform.setIdentity();
+	floorInfo.m_startWorldTransform.setOrigin(btVector3(0, -1, 0));
+	btRigidBody floor(floorInfo);
+	world.addRigidBody(&floor);
+	btBoxShape boxShape(btVector3(btScalar(0.2), btScalar(0.05), btScalar(0.1)));
+	btVector3 inertia;
+	boxShape.calculateLocalInertia(1, inertia);
+	std::vector<std::unique_ptr<btRigidBody>> boxes;
+	for (int i = 0; i < 400; i++)
+	{
+		btRigidBody::btRigidBodyConstructionInfo info(1, nullptr, &boxShape, inertia);
+		info.m_startWorldTransform.setIdentity();
+		info.m_startWorldTransform.setOrigin(btVector3(btScalar(1.0 * (i % 20) - 10), btScalar(0.3), btScalar(1.0 * (i / 20) - 10)));
+		boxes.emplace_back(new btRigidBody(info));
+		boxes.back()->setActivationState(DISABLE_DEACTIVATION);
+		boxes.back()->setLinearVelocity(btVector3(btScalar(2 + i % 3), 0, btScalar(i % 5 - 2)));
+		boxes.back()->setAngularVelocity(btVector3(btScalar(2 + i % 5), btScalar(i % 3), btScalar(3 - i % 7)));  // under 0.05 rad a step
+		world.addRigidBody(boxes.back().get());
+	}
+	world.setContactStepping(btScalar(0.005), btScalar(1e-3));
+	world.getSolverInfo().m_contactTurnPrediction = turnPrediction;
+	for (int frame = 0; frame < 60; frame++) world.stepSimulation(btScalar(1.0 / 240.0), 0);
+	std::vector<double> positions;
+	for (auto& box : boxes)
+	{
+		for (int axis = 0; axis < 3; axis++) positions.push_back(box->getCenterOfMassPosition()[axis]);
+		world.removeRigidBody(box.get());
+	}
+	world.removeRigidBody(&floor);
+	btSetTaskScheduler(btGetSequentialTaskScheduler());
+	return positions;
+}
+}  // namespace
+
+// The contact rows' turn prediction (btContactSolverInfo::m_contactTurnPrediction) reads only the bodies and their
+// shapes: the multithreaded solver's contact setup, in chunks in any order or on two threads, gives the same motion.
+TEST(ThreadSafeBooking, ContactTurnPredictionIsTheSameInAnyOrderAndOnTwoThreads)
+{
+	const std::vector<double> sequential = spinningBoxesOnAFloor(btGetSequentialTaskScheduler(), true);
+	EXPECT_NE(sequential, spinningBoxesOnAFloor(btGetSequentialTaskScheduler(), false)) << "the prediction changes nothing here";
+	ReverseChunkScheduler reverse;
+	EXPECT_EQ(spinningBoxesOnAFloor(&reverse, true), sequential) << "chunks in reverse order";
+	static btITaskScheduler* threads = btCreateDefaultTaskScheduler();
+	ASSERT_NE(threads, nullptr);
+	threads->setNumThreads(2);
+	for (int repeat = 0; repeat < 3; repeat++) EXPECT_EQ(spinningBoxesOnAFloor(threads, true), sequential) << "two threads, run " << repeat;
+}
