@@ -7,7 +7,7 @@ run with `--solver=direct --speculative-contacts --contact-substep=0 --world-con
 frames, against the same case with the direct solve and speculative contacts at 2 us contact substeps in 0.1 ms
 frames (its converged run) with the contact rows' turn prediction (`--contact-turn-prediction`, patch 0055; without
 it the 2 us runs still carry a first-order loss of halves sliding on the striker while they spin: 118.8 J against
-113.5 J for the thesis scene with a 3 mm notch at 12 m/s). Prints one line per run (internal steps, steps to the test's end, loss, its converged
+113.0 J for the thesis scene with a 3 mm notch at 12 m/s). Prints one line per run (internal steps, steps to the test's end, loss, its converged
 loss, the difference, verdicts) and a summary; a line is marked << where the run is not stable, ends otherwise than
 its converged run (through the gap, over the top, not through), is more than 5 % off, or takes more than 100
 internal steps to the test's end. Not part of CI (180 runs, about a minute on two cores).

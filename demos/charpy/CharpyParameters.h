@@ -98,7 +98,7 @@ struct CharpyParameters
 	// motion, their turns included, leaves at the step's end. On with world_contact_travel_m whatever this says (the
 	// world's setContactStepping turns it on); off by default otherwise (upstream's rows). A half sliding along the
 	// striker's nose while it spins loses 1/2 m (a h)^2 a step without it: the thesis scene with a 3 mm notch at 12 m/s
-	// reads 133.8 / 118.8 / 114.5 J at 10 / 2 / 0.5 us substeps, 115.7 / 113.5 / 113.5 J with it
+	// reads 133.8 / 118.8 / 114.5 J at 10 / 2 / 0.5 us substeps, 115.7 / 113.0 / 113.5 J with it
 	bool contact_turn_prediction = false;
 	// Bullet's own continuous collision detection on the specimen's parts (btCollisionObject::setCcdMotionThreshold and
 	// setCcdSweptSphereRadius): a part whose centre moves more than the threshold in a step is swept as a sphere of that
